@@ -1,0 +1,27 @@
+#pragma once
+/// \file Commands.hpp
+/// \brief Sub-commands of the `hikiln` program. Each stage adds one with add*Command(app, action):
+/// it declares its options on a CLI11 sub-command and, when chosen, stores in `action` the work to
+/// do once Kokkos is initialised.
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace hikiln::app {
+
+/// \brief The work a chosen sub-command runs; returns the process exit code.
+using Action = std::function<int()>;
+
+/// \brief `hikiln info`: versions, enabled backends, threads, GPU.
+void addInfoCommand(CLI::App& app, Action& action);
+
+/// \brief Names of the Kokkos backends compiled in ("Serial", "OpenMP", "Cuda").
+std::vector<std::string> enabledBackends();
+
+/// \brief Name of the execution space hikiln runs its kernels on by default.
+std::string defaultBackend();
+
+} // namespace hikiln::app
