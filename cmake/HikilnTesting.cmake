@@ -21,10 +21,14 @@ set(HIKILN_TEST_ENV "OMP_PROC_BIND=false")
 function(_hikiln_register_test name exe labels timeout threads)
   add_test(NAME ${name} COMMAND ${exe})
   set(_env ${HIKILN_TEST_ENV})
+  set(_processors 1)
   if(threads)
     list(APPEND _env "OMP_NUM_THREADS=${threads}")
+    set(_processors ${threads})
   endif()
+  # PROCESSORS keeps `ctest -j` from oversubscribing cores: Kokkos' OpenMP threads spin at barriers.
   set_tests_properties(${name} PROPERTIES LABELS "${labels}" ENVIRONMENT "${_env}" TIMEOUT ${timeout}
+                                          PROCESSORS ${_processors}
                                           WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
 endfunction()
 

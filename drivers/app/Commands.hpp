@@ -18,6 +18,9 @@ using Action = std::function<int()>;
 /// \brief `hikiln info`: versions, enabled backends, threads, GPU.
 void addInfoCommand(CLI::App& app, Action& action);
 
+/// \brief `hikiln calibrate`: fit the continuum rheology to DEM averaged fields.
+void addCalibrateCommand(CLI::App& app, Action& action);
+
 /// \brief Names of the Kokkos backends compiled in ("Serial", "OpenMP", "Cuda").
 std::vector<std::string> enabledBackends();
 

@@ -1,0 +1,25 @@
+#pragma once
+/// \file PlotScript.hpp
+/// \brief Runs drivers/plots/plot_calibration.py with Debian's python3 (which has matplotlib),
+/// or says how to run it later.
+
+#include <string>
+
+namespace hikiln::calibrate {
+
+/// \brief The interpreter the plot scripts are written for.
+inline constexpr const char* plotPython = "/usr/bin/python3";
+
+/// \brief Path of plot_calibration.py: in $HIKILN_PLOT_SCRIPTS when set, else in the source
+/// tree this program was built from (drivers/plots).
+std::string calibrationPlotScript();
+
+/// \brief The shell command that draws the calibration plots into `plotDir` from
+/// calibration.csv and calibration.json in `outputDir`.
+std::string calibrationPlotCommand(const std::string& outputDir, const std::string& plotDir);
+
+/// \brief Runs the plot command when the script exists and plotPython can import matplotlib;
+/// otherwise logs a warning with the command to run later. Returns true when the plots were made.
+bool drawCalibrationPlots(const std::string& outputDir, const std::string& plotDir);
+
+} // namespace hikiln::calibrate

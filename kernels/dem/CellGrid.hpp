@@ -1,0 +1,238 @@
+#pragma once
+/// \file CellGrid.hpp
+/// \brief Uniform cell grid over a bounding box and the binning of particles into its cells, with a
+/// deterministic order of particles inside each cell (sorted by index after an atomic fill).
+
+#include "kernels/common/Compat.hpp"
+#include "kernels/dem/Periodic.hpp"
+
+#include <Kokkos_Core.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+
+namespace hikiln::dem {
+
+/// \brief A uniform grid of nx * ny cells of size hx * hy starting at (xlo, ylo). Positions outside
+/// are clamped to the edge cells, which keeps neighbour search correct (clamping never separates
+/// two particles closer than a cell by more than one cell). With periodicX the x cells tile one
+/// period and wrap around.
+struct CellGrid {
+  double xlo = 0.0, ylo = 0.0;
+  double hx = 1.0, hy = 1.0;
+  int nx = 1, ny = 1;
+  bool periodicX = false;
+
+  /// \brief Number of cells.
+  KOKKOS_INLINE_FUNCTION int numCells() const { return nx * ny; }
+  /// \brief Column of x, clamped to [0, nx).
+  KOKKOS_INLINE_FUNCTION int cellX(double x) const {
+    const double c = math::floor((x - xlo) / hx);
+    return c < 0.0 ? 0 : (c >= nx ? nx - 1 : static_cast<int>(c));
+  }
+  /// \brief Row of y, clamped to [0, ny).
+  KOKKOS_INLINE_FUNCTION int cellY(double y) const {
+    const double c = math::floor((y - ylo) / hy);
+    return c < 0.0 ? 0 : (c >= ny ? ny - 1 : static_cast<int>(c));
+  }
+  /// \brief Linear index of the cell holding (x, y).
+  KOKKOS_INLINE_FUNCTION int cellOf(double x, double y) const { return cellY(y) * nx + cellX(x); }
+};
+
+/// \brief Builds a grid with cells no smaller than minCellSize covering [xmin, xmax] x [ymin, ymax]
+/// (x replaced by the period when periodic is enabled). maxCells bounds the cell count: beyond it
+/// the cells grow (still correct, only slower), which protects against a runaway particle.
+inline CellGrid makeCellGrid(double xmin, double xmax, double ymin, double ymax, double minCellSize,
+                             const PeriodicX& periodic, std::size_t maxCells) {
+  if (!(minCellSize > 0.0) || !std::isfinite(xmin) || !std::isfinite(xmax) ||
+      !std::isfinite(ymin) || !std::isfinite(ymax)) {
+    throw std::runtime_error("hikiln::dem::makeCellGrid: non-finite particle bounds or cell size "
+                             "(a particle position is NaN/inf: the run has blown up)");
+  }
+  CellGrid g;
+  double h = minCellSize;
+  const auto countAlong = [](double extent, double size) {
+    return static_cast<long long>(std::floor(extent / size)) + 1;
+  };
+  long long nx = 0, ny = 0;
+  for (;;) {
+    if (periodic.enabled) {
+      nx = static_cast<long long>(std::floor(periodic.length / h));
+    } else {
+      nx = countAlong(xmax - xmin, h);
+    }
+    ny = countAlong(ymax - ymin, h);
+    if (static_cast<double>(nx) * static_cast<double>(ny) <= static_cast<double>(maxCells)) {
+      break;
+    }
+    h *= 2.0;
+  }
+  if (periodic.enabled) {
+    if (nx < 3) {
+      throw std::runtime_error("hikiln::dem::makeCellGrid: the periodic length " +
+                               std::to_string(periodic.length) +
+                               " must hold at least 3 cells of size " + std::to_string(h));
+    }
+    g.periodicX = true;
+    g.xlo = periodic.xlo;
+    g.hx = periodic.length / static_cast<double>(nx);
+  } else {
+    g.xlo = xmin;
+    g.hx = h;
+  }
+  g.ylo = ymin;
+  g.hy = h;
+  g.nx = static_cast<int>(nx);
+  g.ny = static_cast<int>(ny);
+  return g;
+}
+
+/// \brief Axis-aligned bounds of a set of positions.
+struct Bounds {
+  double xmin = 0.0, xmax = 0.0, ymin = 0.0, ymax = 0.0;
+};
+
+/// \brief Bounds of positions [0, n) (two device reductions). Empty sets give zero bounds.
+template <class ExecutionSpace, class PositionView>
+Bounds particleBounds(ExecutionSpace const& space, PositionView const& position, std::size_t n) {
+  static_assert(
+      Kokkos::SpaceAccessibility<ExecutionSpace, typename PositionView::memory_space>::accessible,
+      "hikiln::dem::particleBounds: positions not accessible");
+  Bounds b;
+  if (n == 0) {
+    return b;
+  }
+  using Reducer = Kokkos::MinMax<double>;
+  typename Reducer::value_type rx, ry;
+  Kokkos::parallel_reduce(
+      "hikiln::dem::boundsX", Kokkos::RangePolicy<ExecutionSpace>(space, 0, n),
+      KOKKOS_LAMBDA(int i, typename Reducer::value_type& v) {
+        const double x = position(i, 0);
+        if (x < v.min_val) {
+          v.min_val = x;
+        }
+        if (x > v.max_val) {
+          v.max_val = x;
+        }
+      },
+      Reducer(rx));
+  Kokkos::parallel_reduce(
+      "hikiln::dem::boundsY", Kokkos::RangePolicy<ExecutionSpace>(space, 0, n),
+      KOKKOS_LAMBDA(int i, typename Reducer::value_type& v) {
+        const double y = position(i, 1);
+        if (y < v.min_val) {
+          v.min_val = y;
+        }
+        if (y > v.max_val) {
+          v.max_val = y;
+        }
+      },
+      Reducer(ry));
+  b.xmin = rx.min_val;
+  b.xmax = rx.max_val;
+  b.ymin = ry.min_val;
+  b.ymax = ry.max_val;
+  // a NaN never wins a comparison: look for it explicitly so makeCellGrid can report it
+  int bad = 0;
+  Kokkos::parallel_reduce(
+      "hikiln::dem::boundsFinite", Kokkos::RangePolicy<ExecutionSpace>(space, 0, n),
+      KOKKOS_LAMBDA(int i, int& v) {
+        if (!math::isfinite(position(i, 0)) || !math::isfinite(position(i, 1))) {
+          v += 1;
+        }
+      },
+      bad);
+  if (bad != 0) {
+    b.xmin = std::nan("");
+  }
+  return b;
+}
+
+/// \brief Particles binned per cell: cellParticles[cellOffset[c] .. cellOffset[c + 1]) are the
+/// indices of the particles in cell c in increasing order; cellOfParticle[i] is i's cell.
+template <class MemorySpace> struct CellBins {
+  using memory_space = MemorySpace;
+  CellGrid grid;
+  Kokkos::View<int*, MemorySpace> cellOfParticle;
+  Kokkos::View<int*, MemorySpace> cellCount;
+  Kokkos::View<int*, MemorySpace> cellOffset;
+  Kokkos::View<int*, MemorySpace> cellParticles;
+
+  /// \brief Makes sure the Views hold n particles and numCells cells (grows only; contents are
+  /// left uninitialised, binParticles() fills them).
+  void reserve(std::size_t n, std::size_t numCells) {
+    const auto make = [](const char* label, std::size_t size) {
+      return Kokkos::View<int*, MemorySpace>(
+          Kokkos::view_alloc(Kokkos::WithoutInitializing, std::string(label)), size);
+    };
+    if (cellOfParticle.extent(0) < n) {
+      cellOfParticle = make("hikiln::dem::cellOfParticle", n);
+      cellParticles = make("hikiln::dem::cellParticles", n);
+    }
+    if (cellCount.extent(0) < numCells) {
+      cellCount = make("hikiln::dem::cellCount", numCells);
+      cellOffset = make("hikiln::dem::cellOffset", numCells + 1);
+    }
+  }
+};
+
+/// \brief Bins positions [0, n) into grid: counts (atomic), offsets (scan), fill (atomic) and a
+/// per-cell insertion sort that makes the order inside a cell independent of thread timing.
+template <class ExecutionSpace, class MemorySpace, class PositionView>
+void binParticles(ExecutionSpace const& space, CellGrid const& grid, PositionView const& position,
+                  std::size_t n, CellBins<MemorySpace>& bins) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::dem::binParticles: bins not accessible");
+  const int numCells = grid.numCells();
+  bins.reserve(n, static_cast<std::size_t>(numCells));
+  bins.grid = grid;
+  auto cellOf = bins.cellOfParticle;
+  auto count = bins.cellCount;
+  auto offset = bins.cellOffset;
+  auto sorted = bins.cellParticles;
+  Kokkos::deep_copy(space, count, 0);
+  Kokkos::parallel_for(
+      "hikiln::dem::binCount", Kokkos::RangePolicy<ExecutionSpace>(space, 0, n),
+      KOKKOS_LAMBDA(int i) {
+        const int c = grid.cellOf(position(i, 0), position(i, 1));
+        cellOf(i) = c;
+        Kokkos::atomic_fetch_add(&count(c), 1);
+      });
+  Kokkos::parallel_scan(
+      "hikiln::dem::binOffsets", Kokkos::RangePolicy<ExecutionSpace>(space, 0, numCells),
+      KOKKOS_LAMBDA(int c, int& partial, bool final) {
+        if (final) {
+          offset(c) = partial;
+        }
+        partial += count(c);
+        if (final && c == numCells - 1) {
+          offset(numCells) = partial;
+        }
+      });
+  Kokkos::deep_copy(space, count, 0);
+  Kokkos::parallel_for(
+      "hikiln::dem::binFill", Kokkos::RangePolicy<ExecutionSpace>(space, 0, n),
+      KOKKOS_LAMBDA(int i) {
+        const int c = cellOf(i);
+        sorted(offset(c) + Kokkos::atomic_fetch_add(&count(c), 1)) = i;
+      });
+  Kokkos::parallel_for(
+      "hikiln::dem::binSort", Kokkos::RangePolicy<ExecutionSpace>(space, 0, numCells),
+      KOKKOS_LAMBDA(int c) {
+        const int begin = offset(c);
+        const int end = offset(c + 1);
+        for (int a = begin + 1; a < end; ++a) {
+          const int v = sorted(a);
+          int b = a - 1;
+          while (b >= begin && sorted(b) > v) {
+            sorted(b + 1) = sorted(b);
+            --b;
+          }
+          sorted(b + 1) = v;
+        }
+      });
+}
+
+} // namespace hikiln::dem

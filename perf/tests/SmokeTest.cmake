@@ -1,0 +1,36 @@
+# Runs hikiln_bench on small arrays (HIKILN_BENCH_MAX_MIB comes from the test environment) and
+# checks that it exits cleanly and writes JSON with benchmarks and the Kokkos context.
+# Usage: cmake -DBENCH_EXE=... -DOUT_JSON=... -P SmokeTest.cmake
+file(REMOVE "${OUT_JSON}")
+execute_process(
+  COMMAND "${BENCH_EXE}" "--benchmark_min_time=0.01" "--benchmark_out=${OUT_JSON}"
+          "--benchmark_out_format=json"
+  RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "hikiln_bench exited with ${rc}")
+endif()
+if(NOT EXISTS "${OUT_JSON}")
+  message(FATAL_ERROR "hikiln_bench wrote no JSON to ${OUT_JSON}")
+endif()
+file(READ "${OUT_JSON}" json)
+string(JSON count ERROR_VARIABLE err LENGTH "${json}" benchmarks)
+if(err OR count LESS 1)
+  message(FATAL_ERROR "no benchmark results in ${OUT_JSON} (${err})")
+endif()
+math(EXPR last "${count} - 1")
+foreach(i RANGE ${last})
+  string(JSON name GET "${json}" benchmarks ${i} name)
+  string(JSON failed ERROR_VARIABLE no_error GET "${json}" benchmarks ${i} error_occurred)
+  if(NOT no_error AND failed)
+    string(JSON message GET "${json}" benchmarks ${i} error_message)
+    message(FATAL_ERROR "benchmark ${name} reported an error: ${message}")
+  endif()
+endforeach()
+foreach(key kokkos_version kokkos_backends hikiln_version cpu_model)
+  string(JSON value ERROR_VARIABLE err GET "${json}" context ${key})
+  if(err)
+    message(FATAL_ERROR "context has no ${key}")
+  endif()
+endforeach()
+string(JSON kokkos GET "${json}" context kokkos_version)
+message(STATUS "perf_smoke: ${count} benchmarks ran, Kokkos ${kokkos}")

@@ -1,0 +1,37 @@
+#pragma once
+/// \file DemState.hpp
+/// \brief Host copy of everything a DEM run needs to continue bitwise identically (for
+/// checkpoints).
+
+#include <cstdint>
+#include <vector>
+
+namespace hikiln::dem {
+
+/// \brief Exported DEM state: particles in their current order, the contact history keyed by ids,
+/// and the clock. Vectors of 2D quantities are interleaved (x0, y0, x1, y1, ...); wallShear holds
+/// wallSlotCount values per particle (slot 0 drum, 1 + k flat wall k).
+struct DemState {
+  std::int64_t step = 0;
+  double time = 0.0;
+  std::vector<std::int64_t> id;
+  std::vector<double> position;
+  std::vector<double> velocity;
+  std::vector<double> angularVelocity;
+  std::vector<double> force; ///< forces of the last evaluation (the next half kick needs them)
+  std::vector<double> torque;
+  std::vector<double> radius;
+  std::vector<double> mass;
+  std::vector<double> inertia;
+  std::vector<double> wallShear;
+  /// Pair history, one entry per (particle, neighbour) slot with a non-zero shear displacement;
+  /// both directions of a pair are present.
+  std::vector<std::int64_t> contactId;
+  std::vector<std::int64_t> contactNeighborId;
+  std::vector<double> contactShear;
+
+  /// \brief Number of particles.
+  std::size_t size() const { return id.size(); }
+};
+
+} // namespace hikiln::dem
