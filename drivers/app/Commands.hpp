@@ -21,6 +21,9 @@ void addInfoCommand(CLI::App& app, Action& action);
 /// \brief `hikiln calibrate`: fit the continuum rheology to DEM averaged fields.
 void addCalibrateCommand(CLI::App& app, Action& action);
 
+/// \brief `hikiln dem CASE -o DIR`: one 2D DEM slice of a rotating drum.
+void addDemCommand(CLI::App& app, Action& action);
+
 /// \brief Names of the Kokkos backends compiled in ("Serial", "OpenMP", "Cuda").
 std::vector<std::string> enabledBackends();
 

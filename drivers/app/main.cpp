@@ -29,6 +29,7 @@ int main(int argc, char* argv[]) {
 
   hikiln::app::Action action;
   hikiln::app::addInfoCommand(app, action);
+  hikiln::app::addDemCommand(app, action);
   hikiln::app::addCalibrateCommand(app, action);
 
   CLI11_PARSE(app, argc, argv);

@@ -102,6 +102,17 @@ CaseFile::Origin CaseFile::origin(const std::string& key) const {
   return _origins[*index];
 }
 
+std::string CaseFile::valuesText(const std::vector<std::string>& exclude) const {
+  std::string out;
+  const auto& specs = _schema.specs();
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    if (std::find(exclude.begin(), exclude.end(), specs[i].key) != exclude.end())
+      continue;
+    out += specs[i].key + ": " + detail::formatValue(_values[i]) + "\n";
+  }
+  return out;
+}
+
 std::string CaseFile::resolvedYaml() const {
   std::string out = "# Resolved case for stage '" + oneLine(_schema.name()) +
                     "': every key with its final value.\n# source: " + oneLine(_source) + "\n";

@@ -47,6 +47,9 @@ public:
   /// comment giving unit, meaning and origin, under a header naming source and overrides.
   /// Loading it again with the same schema gives identical values.
   std::string resolvedYaml() const;
+  /// \brief "key: value" lines of every key in schema order except `exclude`: a fingerprint of
+  /// the case that ignores where values came from (used to check a restart's case).
+  std::string valuesText(const std::vector<std::string>& exclude = {}) const;
   /// \brief Writes resolvedYaml() to `path` atomically (for the run directory).
   void writeResolved(const std::string& path) const;
 

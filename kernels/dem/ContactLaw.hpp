@@ -159,8 +159,9 @@ KOKKOS_INLINE_FUNCTION bool pairFrame(double dx, double dy, double dvx, double d
     return false;
   }
   const double r = math::sqrt(r2);
-  f.nx = dx / r;
-  f.ny = dy / r;
+  const double inv = 1.0 / r; // one division; (-dx) * inv == -(dx * inv) keeps the symmetry
+  f.nx = dx * inv;
+  f.ny = dy * inv;
   f.overlap = radsum - r;
   // surface speeds: i's contact point moves w_i r_i t, j's moves -w_j r_j t; t flips with n
   const double spin = wi * ri + wj * rj;
@@ -197,7 +198,8 @@ KOKKOS_INLINE_FUNCTION ContactForce evaluateContact(const ContactCoefficients& c
   out.normal = fn;
 
   const double shear = updateHistory ? shearOld + f.tangentialSpeed * dt : shearOld;
-  const double ct = tangentialDampingCoefficient(c, meff);
+  // = tangentialDampingCoefficient(c, meff), reusing c_n in Restitution mode
+  const double ct = c.rateMode ? c.tangentialDamping * meff : c.tangentialDamping * cn;
   const double ft = c.kt * shear + ct * f.tangentialSpeed;
   const double cap = c.mu * math::fabs(fn);
   if (math::fabs(ft) > cap) {

@@ -81,9 +81,9 @@ template <class MemorySpace, bool Kick> struct ForceFunctor {
         slotFt(i, k) = 0.0;
         continue;
       }
-      const ContactForce c =
-          evaluateContact(s.particle, fr, effectiveMass(mi, mass(j)), rollingRadius(ri, rj),
-                          wi - w(j), shear(i, k), s.dt, s.updateHistory);
+      const double rr = s.particle.rolling ? rollingRadius(ri, rj) : 0.0;
+      const ContactForce c = evaluateContact(s.particle, fr, effectiveMass(mi, mass(j)), rr,
+                                             wi - w(j), shear(i, k), s.dt, s.updateHistory);
       shear(i, k) = c.shear;
       slotFn(i, k) = c.normal;
       slotFt(i, k) = c.tangential;

@@ -112,6 +112,13 @@ public:
     _settings.gravityY = _config.gravityY;
   }
 
+  // Views are shared handles: a copy would alias the state, so systems are move-only.
+  DemSystem(const DemSystem&) = delete;
+  DemSystem& operator=(const DemSystem&) = delete;
+  DemSystem(DemSystem&&) = default;
+  DemSystem& operator=(DemSystem&&) = default;
+  ~DemSystem() = default;
+
   /// \brief Takes the live particles of a host container (radius, mass and inertia set, unique
   /// ids), clears all contact history, resets the clock, builds the list and evaluates the initial
   /// forces (history not advanced, as LAMMPS's set-up).

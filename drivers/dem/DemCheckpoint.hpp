@@ -1,0 +1,17 @@
+#pragma once
+/// \file DemCheckpoint.hpp
+/// \brief DemState <-> hikiln::io::Checkpoint, so a DEM run can stop and continue bitwise
+/// identically.
+
+#include "drivers/io/Checkpoint.hpp"
+#include "solvers/dem/DemState.hpp"
+
+namespace hikiln::dem {
+
+/// \brief Packs a DEM state (and the caller's extra scalars) into a checkpoint.
+io::Checkpoint toCheckpoint(const DemState& state, const std::string& stage);
+
+/// \brief Unpacks the DEM state of a checkpoint; throws std::runtime_error naming a missing array.
+DemState fromCheckpoint(const io::Checkpoint& checkpoint);
+
+} // namespace hikiln::dem

@@ -1,0 +1,34 @@
+#pragma once
+/// \file ParticleSnapshots.hpp
+/// \brief Particle snapshots of a DEM run: one HDF5 file per snapshot (written atomically, so a
+/// killed run keeps every finished snapshot) and one XDMF series `particles.xmf` for ParaView.
+
+#include "drivers/io/Hdf5File.hpp"
+#include "drivers/io/Xdmf.hpp"
+#include "kernels/dem/ParticleArrays.hpp"
+
+#include <string>
+#include <vector>
+
+namespace hikiln::dem {
+
+/// \brief Writes snapshots into DIR/snapshots/ and keeps DIR/particles.xmf listing them.
+class ParticleSnapshots {
+public:
+  /// \brief Snapshots of a run in `directory`; existing snapshots later than `keepUntil` (a restart
+  /// time) are dropped from the series, earlier ones are kept.
+  ParticleSnapshots(std::string directory, io::RunInfo info, double keepUntil = -1.0);
+
+  /// \brief Writes one snapshot (position, velocity, angular velocity, radius, id) and the series.
+  void write(std::int64_t step, double time, const ParticleArrays<Kokkos::HostSpace>& particles);
+
+  /// \brief Number of snapshots in the series.
+  std::size_t size() const { return _steps.size(); }
+
+private:
+  std::string _directory;
+  io::RunInfo _info;
+  std::vector<io::XdmfParticleStep> _steps;
+};
+
+} // namespace hikiln::dem

@@ -1,0 +1,167 @@
+#include "solvers/dem/DrumFill.hpp"
+
+#include "solvers/dem/SplitMix.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace hikiln::dem {
+
+namespace {
+constexpr double pi = constants::pi;
+
+void require(bool ok, const std::string& what) {
+  if (!ok)
+    throw std::invalid_argument("drum fill: " + what);
+}
+
+double discArea(double r) {
+  return pi * r * r;
+}
+
+ParticleArrays<Kokkos::HostSpace> subset(const ParticleArrays<Kokkos::HostSpace>& p,
+                                         const std::vector<std::size_t>& keep) {
+  ParticleArrays<Kokkos::HostSpace> out(keep.size(), keep.size());
+  for (std::size_t k = 0; k < keep.size(); ++k) {
+    const std::size_t i = keep[k];
+    for (int d = 0; d < 2; ++d) {
+      out.position(k, d) = p.position(i, d);
+      out.velocity(k, d) = p.velocity(i, d);
+    }
+    out.angularVelocity(k) = p.angularVelocity(i);
+    out.radius(k) = p.radius(i);
+    out.mass(k) = p.mass(i);
+    out.inertia(k) = p.inertia(i);
+    out.inverseMass(k) = p.inverseMass(i);
+    out.inverseInertia(k) = p.inverseInertia(i);
+    out.id(k) = p.id(i);
+  }
+  return out;
+}
+} // namespace
+
+double circularSegmentArea(double radius, double height) {
+  const double h = std::clamp(height, -radius, radius);
+  return radius * radius * std::acos(-h / radius) + h * std::sqrt(radius * radius - h * h);
+}
+
+double segmentHeightForFraction(double radius, double fraction) {
+  const double target = fraction * pi * radius * radius;
+  double lo = -radius, hi = radius;
+  for (int it = 0; it < 100; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (circularSegmentArea(radius, mid) < target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+ParticleArrays<Kokkos::HostSpace> generateDrumLattice(const FillSpec& s) {
+  require(s.drumRadius > 0, "drum radius must be > 0");
+  require(s.fill > 0 && s.fill < 1, "fill must be in (0, 1), got " + std::to_string(s.fill));
+  require(s.meanDiameter > 0, "mean diameter must be > 0");
+  require(s.sizeRange >= 0 && s.sizeRange <= 1, "size range must be in [0, 1]");
+  require(s.meanDiameter * (1 + s.sizeRange) < 0.5 * s.drumRadius,
+          "particles must be much smaller than the drum");
+  const double dMin = s.meanDiameter * std::max(1 - s.sizeRange, s.minDiameterFraction);
+  const double dMax = s.meanDiameter * (1 + s.sizeRange);
+  // Lattice spacing leaves a small gap between the largest discs; rows are sqrt(3)/2 apart.
+  const double spacing = 1.02 * dMax;
+  const double rowHeight = 0.5 * std::sqrt(3.0) * spacing;
+  // A settled bed packs to ~0.82 (2D discs); the loose lattice packs less, so it spans more area.
+  const double latticePacking = 0.25 * pi * s.meanDiameter * s.meanDiameter / (spacing * rowHeight);
+  const double latticeFraction = std::min(0.95, s.overfill * s.fill * 0.82 / latticePacking);
+  const double top = segmentHeightForFraction(s.drumRadius, latticeFraction);
+  const double inner = s.drumRadius - 0.51 * spacing;
+  std::vector<double> xs, ys;
+  int row = 0;
+  for (double y = -inner; y <= top; y += rowHeight, ++row) {
+    const double half = std::sqrt(std::max(0.0, inner * inner - y * y));
+    const double shift = (row % 2) * 0.5 * spacing;
+    for (double x = -half + shift; x <= half; x += spacing) {
+      if (x * x + y * y <= inner * inner) {
+        xs.push_back(x);
+        ys.push_back(y);
+      }
+    }
+  }
+  require(!xs.empty(), "no particle fits: drum too small for the particles");
+  ParticleArrays<Kokkos::HostSpace> p(xs.size(), xs.size());
+  SplitMix64 random(s.seed);
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    p.position(i, 0) = xs[i];
+    p.position(i, 1) = ys[i];
+    p.radius(i) = 0.5 * (dMin + (dMax - dMin) * random.uniform());
+    p.id(i) = static_cast<std::int64_t>(i);
+  }
+  assignMassPropertiesHost(p, s.density, s.convention, s.thickness);
+  return p;
+}
+
+BedMeasurement measureBed(const ParticleArrays<Kokkos::HostSpace>& p, double R) {
+  BedMeasurement m;
+  m.count = p.count();
+  if (m.count == 0)
+    return m;
+  double meanR = 0;
+  for (std::size_t i = 0; i < m.count; ++i) {
+    m.solidArea += discArea(p.radius(i));
+    meanR += p.radius(i);
+  }
+  meanR /= static_cast<double>(m.count);
+  // Surface: the top of the highest particle per bin (4 mean diameters wide) across the bed.
+  const double bin = 8 * meanR;
+  const int nb = static_cast<int>(std::ceil(2 * R / bin));
+  std::vector<double> highest(nb, -1e300);
+  for (std::size_t i = 0; i < m.count; ++i) {
+    const int b = std::clamp(static_cast<int>((p.position(i, 0) + R) / bin), 0, nb - 1);
+    highest[b] = std::max(highest[b], p.position(i, 1) + p.radius(i));
+  }
+  double sum = 0;
+  int used = 0;
+  for (double h : highest)
+    if (h > -1e299)
+      sum += h, ++used;
+  m.surfaceHeight = sum / used;
+  // Bulk fraction: centres in the disc of radius R - 4 r_mean below the surface minus 4 r_mean.
+  const double rIn = R - 4 * meanR, hIn = m.surfaceHeight - 4 * meanR;
+  double inside = 0;
+  for (std::size_t i = 0; i < m.count; ++i) {
+    const double x = p.position(i, 0), y = p.position(i, 1);
+    if (x * x + y * y < rIn * rIn && y < hIn)
+      inside += discArea(p.radius(i));
+  }
+  const double region = circularSegmentArea(rIn, hIn);
+  m.bulkFraction = region > 0 && inside > 0 ? inside / region : 0.0;
+  m.fill = m.bulkFraction > 0 ? m.solidArea / (m.bulkFraction * pi * R * R) : 0.0;
+  return m;
+}
+
+ParticleArrays<Kokkos::HostSpace> trimToFill(const ParticleArrays<Kokkos::HostSpace>& p, double R,
+                                             double fill, double bulkFraction) {
+  require(bulkFraction > 0 && bulkFraction <= 1, "bulk fraction must be in (0, 1]");
+  std::vector<std::size_t> order(p.count());
+  std::iota(order.begin(), order.end(), 0);
+  // Lowest first; ties broken by id so the result does not depend on the particle order.
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const double ya = p.position(a, 1), yb = p.position(b, 1);
+    return ya != yb ? ya < yb : p.id(a) < p.id(b);
+  });
+  const double target = fill * bulkFraction * pi * R * R;
+  std::vector<std::size_t> keep;
+  double area = 0;
+  for (std::size_t i : order) {
+    const double a = discArea(p.radius(i));
+    if (area + 0.5 * a > target)
+      break;
+    keep.push_back(i);
+    area += a;
+  }
+  std::sort(keep.begin(), keep.end());
+  return subset(p, keep);
+}
+
+} // namespace hikiln::dem

@@ -1,0 +1,62 @@
+#pragma once
+/// \file DrumFill.hpp
+/// \brief Filling a drum to a requested fill fraction (host side, run once before a DEM slice).
+///
+/// Fill is the bed area including voids over the drum area (physics.md 1). The recipe:
+/// 1. generateDrumLattice(): discs on a hexagonal lattice in the lower part of the drum, overfilled
+///    (a loose lattice packs less densely than a settled bed), radii from a seeded uniform law;
+/// 2. the caller settles them under gravity;
+/// 3. measureBed() finds the settled bulk solid fraction phi; trimToFill() removes the highest
+///    particles until the solids area equals fill * phi * pi R^2;
+/// 4. the caller settles again and measureBed() reports the fill reached.
+
+#include "kernels/dem/ParticleArrays.hpp"
+
+#include <cstdint>
+
+namespace hikiln::dem {
+
+/// \brief Particle sizes and material of a drum fill.
+struct FillSpec {
+  double drumRadius = 1.0;           ///< m
+  double fill = 0.2;                 ///< requested bed area fraction, (0, 1)
+  double meanDiameter = 0.02;        ///< m
+  double sizeRange = 0.05;           ///< diameters uniform in mean * [1 - range, 1 + range]
+  double minDiameterFraction = 0.05; ///< floor on diameters (a +-100 % range would reach 0)
+  double density = 2700.0;           ///< kg/m^3
+  MassConvention convention = MassConvention::Sphere;
+  double thickness = 0.02; ///< m, for MassConvention::Disc
+  std::uint64_t seed = 12345;
+  double overfill = 1.35; ///< lattice area over the target bed area
+};
+
+/// \brief What measureBed() finds in a settled (or flowing) bed.
+struct BedMeasurement {
+  double solidArea = 0.0;     ///< sum of disc areas (m^2)
+  double bulkFraction = 0.0;  ///< solid area fraction in the bed's interior
+  double fill = 0.0;          ///< solidArea / (bulkFraction pi R^2)
+  double surfaceHeight = 0.0; ///< mean top of the bed (m), from the highest particles per bin
+  std::size_t count = 0;      ///< particles
+};
+
+/// \brief Area of the part of a circle of radius R below the horizontal line y = h.
+double circularSegmentArea(double radius, double height);
+
+/// \brief Height h at which circularSegmentArea(R, h) = fraction * pi R^2 (bisection).
+double segmentHeightForFraction(double radius, double fraction);
+
+/// \brief Discs on a hexagonal lattice filling the lower part of the drum (ids 0..n-1, at rest,
+/// mass properties set). Throws std::invalid_argument for impossible specifications.
+ParticleArrays<Kokkos::HostSpace> generateDrumLattice(const FillSpec& spec);
+
+/// \brief Measures the bed: bulk solid fraction from the particles whose centres lie at least two
+/// mean diameters inside the wall and below the surface, and the fill implied by it.
+BedMeasurement measureBed(const ParticleArrays<Kokkos::HostSpace>& particles, double drumRadius);
+
+/// \brief Copy of `particles` without the highest ones, so that the solid area is
+/// fill * bulkFraction * pi R^2 (at most one disc area off); all of them if there are too few.
+/// Ids are kept.
+ParticleArrays<Kokkos::HostSpace> trimToFill(const ParticleArrays<Kokkos::HostSpace>& particles,
+                                             double drumRadius, double fill, double bulkFraction);
+
+} // namespace hikiln::dem
