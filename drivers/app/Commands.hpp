@@ -24,6 +24,12 @@ void addCalibrateCommand(CLI::App& app, Action& action);
 /// \brief `hikiln dem CASE -o DIR`: one 2D DEM slice of a rotating drum.
 void addDemCommand(CLI::App& app, Action& action);
 
+/// \brief `hikiln sweep STUDY -o DIR`: a resumable DEM parameter study.
+void addSweepCommand(CLI::App& app, Action& action);
+
+/// \brief `hikiln schema STAGE`: the case-file reference of a stage.
+void addSchemaCommand(CLI::App& app, Action& action);
+
 /// \brief Names of the Kokkos backends compiled in ("Serial", "OpenMP", "Cuda").
 std::vector<std::string> enabledBackends();
 

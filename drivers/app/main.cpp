@@ -30,7 +30,9 @@ int main(int argc, char* argv[]) {
   hikiln::app::Action action;
   hikiln::app::addInfoCommand(app, action);
   hikiln::app::addDemCommand(app, action);
+  hikiln::app::addSweepCommand(app, action);
   hikiln::app::addCalibrateCommand(app, action);
+  hikiln::app::addSchemaCommand(app, action);
 
   CLI11_PARSE(app, argc, argv);
 

@@ -77,6 +77,9 @@ cases::CaseSchema buildSchema() {
       .nonNegative()
       .defaultsTo("906")
       .doc("gamma_t (damping: rate)");
+  s.boolean("contact.limit_damping")
+      .defaultsTo("true")
+      .doc("No tensile normal force: clamp F_n >= 0 (LAMMPS default: false)");
   s.real("contact.rolling_friction")
       .nonNegative()
       .defaultsTo("0.0")
@@ -162,6 +165,7 @@ ContactParameters contactFromCase(const cases::CaseFile& c, bool wall) {
   p.tangentialDampingFactor = c.real("contact.tangential_damping_factor");
   p.normalDampingRate = c.real("contact.normal_damping_rate");
   p.tangentialDampingRate = c.real("contact.tangential_damping_rate");
+  p.limitDamping = c.boolean("contact.limit_damping");
   const double mur = c.real(wall ? "contact.wall_rolling_friction" : "contact.rolling_friction");
   p.rolling = mur > 0 ? RollingModel::ConstantTorque : RollingModel::None;
   p.rollingFriction = mur;
