@@ -14,8 +14,12 @@ Usage: perf/run.sh [options]
   --build-dir DIR     build directory (default build-perf/ under the repository root)
   --threads "1 2"     OpenMP thread counts to run (default "1 2")
   --repetitions N     repeat each benchmark N times and report the median (default 1)
+  --lammps            also run perf/lammps/compare_drum.sh (LAMMPS vs hikiln base drum, rotation
+                      phase only; installs the Debian lammps package if missing) and write its
+                      table and JSON next to the results (<output>-lammps.{md,json})
   -h, --help          this text
-Environment: HIKILN_BENCH_MAX_MIB caps the largest array (MiB, default 512).
+Environment: HIKILN_BENCH_MAX_MIB caps the largest array (MiB, default 512);
+HIKILN_BENCH_MAX_PARTICLES caps the DEM benchmarks (default 1000000; --quick: 10000).
 TEXT
 }
 
@@ -27,6 +31,7 @@ quick=0
 output=""
 threads_list="1 2"
 repetitions=1
+lammps=0
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --filter) filter="${2:?--filter needs a REGEX}"; shift 2 ;;
@@ -40,6 +45,7 @@ while [[ $# -gt 0 ]]; do
     --threads=*) threads_list="${1#*=}"; shift ;;
     --repetitions) repetitions="${2:?--repetitions needs N}"; shift 2 ;;
     --repetitions=*) repetitions="${1#*=}"; shift ;;
+    --lammps) lammps=1; shift ;;
     -h|--help) usage; exit 0 ;;
     *) echo "perf/run.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
   esac
@@ -67,6 +73,7 @@ export OMP_PROC_BIND=spread OMP_PLACES=threads
 extra=()
 if [[ $quick -eq 1 ]]; then
   export HIKILN_BENCH_MAX_MIB="${HIKILN_BENCH_MAX_MIB:-8}"
+  export HIKILN_BENCH_MAX_PARTICLES="${HIKILN_BENCH_MAX_PARTICLES:-10000}"
   extra+=(--benchmark_min_time=0.01)
 fi
 if [[ $repetitions -gt 1 ]]; then
@@ -130,3 +137,11 @@ python3 "$repo/perf/scripts/merge_runs.py" --output "$output" --markdown "$markd
   --command "perf/run.sh $original_args" "${run_args[@]}"
 echo >&2
 echo "perf/run.sh: wrote $output and $markdown" >&2
+
+# (e) Optional: LAMMPS side by side on the base drum (2 ranks vs 2 threads by default).
+if [[ $lammps -eq 1 ]]; then
+  lammps_args=(--build-dir "$build_dir" --json "${output%.json}-lammps.json")
+  [[ $quick -eq 1 ]] && lammps_args+=(--quick)
+  "$repo/perf/lammps/compare_drum.sh" "${lammps_args[@]}" | tee "${output%.json}-lammps.md"
+  echo "perf/run.sh: wrote ${output%.json}-lammps.{json,md}" >&2
+fi

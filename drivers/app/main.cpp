@@ -1,6 +1,7 @@
 // hikiln: hierarchical simulation of rotary kilns. One program, one sub-command per stage.
 #include "drivers/app/Commands.hpp"
 #include "drivers/log/Log.hpp"
+#include "kernels/common/Compat.hpp"
 
 #include <Kokkos_Core.hpp>
 #include <spdlog/spdlog.h>
@@ -8,6 +9,7 @@
 #include <cstdlib>
 #include <exception>
 #include <string>
+#include <vector>
 
 int main(int argc, char* argv[]) {
   CLI::App app{
@@ -42,14 +44,18 @@ int main(int argc, char* argv[]) {
     std::fprintf(stderr, "hikiln: %s\n", e.what());
     return 2;
   }
-  if (threads > 0)
-    ::setenv("OMP_NUM_THREADS", std::to_string(threads).c_str(), 1);
   // Pin OpenMP threads unless the user chose otherwise (also silences Kokkos' warning about it).
   ::setenv("OMP_PROC_BIND", "spread", 0);
   ::setenv("OMP_PLACES", "threads", 0);
 
-  int kokkosArgc = 1;
-  Kokkos::ScopeGuard kokkos(kokkosArgc, argv);
+  // Kokkos sees only the program name plus what hikiln chose (CLI11 already parsed the rest).
+  std::string threadsArgument = hikiln::kokkosThreadsArgument(threads);
+  std::vector<char*> kokkosArgv{argv[0]};
+  if (threads > 0)
+    kokkosArgv.push_back(threadsArgument.data());
+  kokkosArgv.push_back(nullptr);
+  int kokkosArgc = static_cast<int>(kokkosArgv.size()) - 1;
+  Kokkos::ScopeGuard kokkos(kokkosArgc, kokkosArgv.data());
   try {
     return action ? action() : 0;
   } catch (const std::exception& e) {

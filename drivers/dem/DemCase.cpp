@@ -1,13 +1,11 @@
 #include "drivers/dem/DemCase.hpp"
 
 #include <cmath>
-#include <limits>
 
 namespace hikiln::dem {
 
 namespace {
 using cases::Bounds;
-constexpr double inf = std::numeric_limits<double>::infinity();
 
 cases::CaseSchema buildSchema() {
   cases::CaseSchema s("dem");

@@ -3,6 +3,7 @@
 #include "drivers/app/Commands.hpp"
 #include "drivers/dem/DemCase.hpp"
 #include "drivers/dem/DemCheckpoint.hpp"
+#include "drivers/dem/DrumAverages.hpp"
 #include "drivers/dem/ParticleSnapshots.hpp"
 #include "drivers/dem/TimeSeries.hpp"
 #include "drivers/io/AtomicFile.hpp"
@@ -100,6 +101,7 @@ int runDrum(const DrumRunOptions& o) {
   const double R = s.fill.drumRadius;
 
   DemSystem<Space> system(s.config);
+  DrumAverages averages(s, out.string(), info);
   Running slip, angle;
   std::int64_t rotationStartStep = 0;
   double rotationStartTime = 0, fillMeasured = 0, bulkFraction = 0, settleWall = 0;
@@ -127,6 +129,7 @@ int runDrum(const DrumRunOptions& o) {
     rotationStartTime = cp.scalars.at("rotation_start_time");
     fillMeasured = cp.scalars.at("fill_measured");
     bulkFraction = cp.scalars.at("bulk_fraction");
+    averages.resume(cp, system.hostParticles(), fillMeasured);
     restartTime = cp.time;
     series.keepUntil(restartTime);
     spdlog::info("restarting from {} at t = {:.3f} s (step {})", checkpointPath, cp.time, cp.step);
@@ -150,6 +153,7 @@ int runDrum(const DrumRunOptions& o) {
     const BedMeasurement bed = measureBed(system.hostParticles(), R);
     fillMeasured = bed.fill;
     bulkFraction = bed.bulkFraction;
+    averages.start(system.hostParticles(), fillMeasured);
     settleWall = secondsSince(t0);
     spdlog::info(
         "bed: {} particles, fill {:.2f} % (requested {:.2f} %), bulk solid fraction {:.3f}",
@@ -168,6 +172,7 @@ int runDrum(const DrumRunOptions& o) {
   const std::int64_t sampleEvery = everyN(s.sampleInterval);
   const std::int64_t snapshotEvery = everyN(s.snapshotInterval);
   const std::int64_t checkpointEvery = everyN(s.checkpointInterval);
+  const std::int64_t averageEvery = everyN(s.averageInterval);
   const std::int64_t spinUpSteps = std::llround(s.spinUp / dt);
   if (!o.restart)
     snapshots.write(system.stepCount(), system.time(), system.hostParticles());
@@ -186,17 +191,24 @@ int runDrum(const DrumRunOptions& o) {
       const auto host = system.hostParticles();
       const double sl = wallSlip(host, R, s.omega());
       const double an = surfaceAngleDegrees(host);
-      if (k >= spinUpSteps)
+      if (k >= spinUpSteps) {
         slip.add(sl), angle.add(an);
+        averages.sample(system, static_cast<double>(k) * dt);
+      }
       series.add({system.time(), static_cast<double>(k) * dt, system.energy().kinetic(), sl, an});
-      if (k % snapshotEvery == 0)
+      if ((k - n) / snapshotEvery != k / snapshotEvery)
         snapshots.write(system.stepCount(), system.time(), host);
     }
-    if (k % checkpointEvery == 0 || k == totalSteps) {
+    // cumulative averages.h5 at the first step on or past each interval (k moves in sample steps)
+    if (k >= spinUpSteps && ((k - n) / averageEvery != k / averageEvery || k == totalSteps))
+      averages.write(static_cast<double>(k) * dt);
+    // Steps advance a sample interval at a time: act on the first step on or past each interval.
+    if ((k - n) / checkpointEvery != k / checkpointEvery || k == totalSteps) {
       io::Checkpoint cp = toCheckpoint(system.exportState(), "dem");
       cp.resolvedCaseYaml = file.resolvedYaml();
       slip.save(cp, "slip");
       angle.save(cp, "angle");
+      averages.save(cp);
       cp.scalars["rotation_start_step"] = static_cast<double>(rotationStartStep);
       cp.scalars["rotation_start_time"] = rotationStartTime;
       cp.scalars["fill_measured"] = fillMeasured;
@@ -240,7 +252,9 @@ int runDrum(const DrumRunOptions& o) {
   summary["averages_from_s"] = s.spinUp;
   summary["kinetic_energy_final_J"] = system.energy().kinetic();
   summary["snapshots"] = snapshots.size();
+  summary["averages"] = averages.summary();
   io::writeSummaryJson((out / "summary.json").string(), summary);
+  averages.plot();
   spdlog::info("dem: {} particles, {:.1f} s rotated in {:.1f} s wall ({:.3g} particle-steps/s); "
                "wall slip {:.1f} %, surface angle {:.1f} deg; outputs in {}",
                system.size(), s.duration, rotateWall, summary["particle_steps_per_s"].get<double>(),

@@ -94,6 +94,17 @@ inline std::string kokkosVersionString() {
   return text;
 }
 
+/// \brief Command-line argument that sets the host backend's thread count at Kokkos
+/// initialisation (the option was renamed in 4.0). Setting OMP_NUM_THREADS from inside the
+/// program is too late: the OpenMP runtime reads it when the library loads.
+inline std::string kokkosThreadsArgument(int threads) {
+#if KOKKOS_VERSION >= 40000
+  return "--kokkos-num-threads=" + std::to_string(threads);
+#else
+  return "--kokkos-threads=" + std::to_string(threads);
+#endif
+}
+
 } // namespace hikiln
 
 /// \brief printf usable inside kernels on every backend (Kokkos::printf is 4.2+).

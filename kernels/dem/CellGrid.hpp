@@ -94,7 +94,45 @@ struct Bounds {
   double xmin = 0.0, xmax = 0.0, ymin = 0.0, ymax = 0.0;
 };
 
-/// \brief Bounds of positions [0, n) (two device reductions). Empty sets give zero bounds.
+namespace detail {
+/// \brief One reduction for the bounds and the count of non-finite positions.
+template <class PositionView> struct BoundsFunctor {
+  struct value_type {
+    double xmin, xmax, ymin, ymax;
+    int bad;
+  };
+  PositionView position;
+
+  KOKKOS_INLINE_FUNCTION void init(value_type& v) const {
+    v.xmin = v.ymin = 1.0e308;
+    v.xmax = v.ymax = -1.0e308;
+    v.bad = 0;
+  }
+  KOKKOS_INLINE_FUNCTION void join(volatile value_type& a, const volatile value_type& b) const {
+    a.xmin = b.xmin < a.xmin ? b.xmin : a.xmin;
+    a.xmax = b.xmax > a.xmax ? b.xmax : a.xmax;
+    a.ymin = b.ymin < a.ymin ? b.ymin : a.ymin;
+    a.ymax = b.ymax > a.ymax ? b.ymax : a.ymax;
+    a.bad += b.bad;
+  }
+  KOKKOS_INLINE_FUNCTION void operator()(int i, value_type& v) const {
+    const double x = position(i, 0);
+    const double y = position(i, 1);
+    // a NaN never wins a comparison: count it explicitly so makeCellGrid can report it
+    if (!math::isfinite(x) || !math::isfinite(y)) {
+      v.bad += 1;
+      return;
+    }
+    v.xmin = x < v.xmin ? x : v.xmin;
+    v.xmax = x > v.xmax ? x : v.xmax;
+    v.ymin = y < v.ymin ? y : v.ymin;
+    v.ymax = y > v.ymax ? y : v.ymax;
+  }
+};
+} // namespace detail
+
+/// \brief Bounds of positions [0, n) (one device reduction). Empty sets give zero bounds; a
+/// non-finite position gives NaN bounds (makeCellGrid() reports it).
 template <class ExecutionSpace, class PositionView>
 Bounds particleBounds(ExecutionSpace const& space, PositionView const& position, std::size_t n) {
   static_assert(
@@ -104,47 +142,15 @@ Bounds particleBounds(ExecutionSpace const& space, PositionView const& position,
   if (n == 0) {
     return b;
   }
-  using Reducer = Kokkos::MinMax<double>;
-  typename Reducer::value_type rx, ry;
-  Kokkos::parallel_reduce(
-      "hikiln::dem::boundsX", Kokkos::RangePolicy<ExecutionSpace>(space, 0, n),
-      KOKKOS_LAMBDA(int i, typename Reducer::value_type& v) {
-        const double x = position(i, 0);
-        if (x < v.min_val) {
-          v.min_val = x;
-        }
-        if (x > v.max_val) {
-          v.max_val = x;
-        }
-      },
-      Reducer(rx));
-  Kokkos::parallel_reduce(
-      "hikiln::dem::boundsY", Kokkos::RangePolicy<ExecutionSpace>(space, 0, n),
-      KOKKOS_LAMBDA(int i, typename Reducer::value_type& v) {
-        const double y = position(i, 1);
-        if (y < v.min_val) {
-          v.min_val = y;
-        }
-        if (y > v.max_val) {
-          v.max_val = y;
-        }
-      },
-      Reducer(ry));
-  b.xmin = rx.min_val;
-  b.xmax = rx.max_val;
-  b.ymin = ry.min_val;
-  b.ymax = ry.max_val;
-  // a NaN never wins a comparison: look for it explicitly so makeCellGrid can report it
-  int bad = 0;
-  Kokkos::parallel_reduce(
-      "hikiln::dem::boundsFinite", Kokkos::RangePolicy<ExecutionSpace>(space, 0, n),
-      KOKKOS_LAMBDA(int i, int& v) {
-        if (!math::isfinite(position(i, 0)) || !math::isfinite(position(i, 1))) {
-          v += 1;
-        }
-      },
-      bad);
-  if (bad != 0) {
+  using Functor = detail::BoundsFunctor<PositionView>;
+  typename Functor::value_type v;
+  Kokkos::parallel_reduce("hikiln::dem::bounds", Kokkos::RangePolicy<ExecutionSpace>(space, 0, n),
+                          Functor{position}, v);
+  b.xmin = v.xmin;
+  b.xmax = v.xmax;
+  b.ymin = v.ymin;
+  b.ymax = v.ymax;
+  if (v.bad != 0) {
     b.xmin = std::nan("");
   }
   return b;

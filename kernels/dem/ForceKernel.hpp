@@ -1,9 +1,13 @@
 #pragma once
 /// \file ForceKernel.hpp
-/// \brief Contact, wall and gravity forces of every particle from its full neighbour row, fused
-/// with the second velocity-Verlet half kick. Each particle sums in registers and writes only its
-/// own entries (force, torque, its history row, its wall history): no atomics, and the result does
-/// not depend on the thread count.
+/// \brief Contact, wall and gravity forces of every particle from its full neighbour row
+/// (optionally fused with the second velocity-Verlet half kick). Each particle sums in registers
+/// and writes only its own entries (force, torque, its history row, its wall history): no atomics,
+/// and the result does not depend on the thread count.
+///
+/// The time step stores no per-contact forces (they would double the list's memory traffic);
+/// computeContactForces() re-evaluates them for the current state when a sampler needs them.
+/// Slots are tested with the squared distance before any neighbour velocity is loaded.
 
 #include "kernels/common/Compat.hpp"
 #include "kernels/dem/ContactLaw.hpp"
@@ -14,6 +18,8 @@
 #include "kernels/dem/Walls.hpp"
 
 #include <Kokkos_Core.hpp>
+
+#include <stdexcept>
 
 namespace hikiln::dem {
 
@@ -30,8 +36,13 @@ struct ForceSettings {
 
 namespace detail {
 
+/// \brief Particles per dynamically scheduled chunk of the force kernel (a few microseconds).
+inline constexpr int forceChunk = 64;
+
 /// \brief Per-particle body of the force evaluation; Kick also writes the half-kicked velocity.
-template <class MemorySpace, bool Kick> struct ForceFunctor {
+/// Sample evaluates without touching the state: contact history, force and torque are left as
+/// they are and the contact forces go to slotFn/slotFt and wallFn/wallFt instead.
+template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor {
   using Vec = Kokkos::View<double* [2], MemorySpace>;
   using Scalar = Kokkos::View<double*, MemorySpace>;
   using Wall = Kokkos::View<double* [wallSlotCount], MemorySpace>;
@@ -49,16 +60,22 @@ template <class MemorySpace, bool Kick> struct ForceFunctor {
                                           double mi, double ri, double relativeSpin, double& fx,
                                           double& fy, double& t) const {
     if (!touching) {
-      wallShear(i, slot) = 0.0;
-      wallFn(i, slot) = 0.0;
-      wallFt(i, slot) = 0.0;
+      if (Sample) {
+        wallFn(i, slot) = 0.0;
+        wallFt(i, slot) = 0.0;
+      } else if (wallShear(i, slot) != 0.0) { // most particles never touch: no store
+        wallShear(i, slot) = 0.0;
+      }
       return;
     }
     const ContactForce c = evaluateContact(s.wall, fr, mi, ri, relativeSpin, wallShear(i, slot),
-                                           s.dt, s.updateHistory);
-    wallShear(i, slot) = c.shear;
-    wallFn(i, slot) = c.normal;
-    wallFt(i, slot) = c.tangential;
+                                           s.dt, Sample ? false : s.updateHistory);
+    if (Sample) {
+      wallFn(i, slot) = c.normal;
+      wallFt(i, slot) = c.tangential;
+    } else {
+      wallShear(i, slot) = c.shear;
+    }
     fx += -c.normal * fr.nx + c.tangential * (-fr.ny);
     fy += -c.normal * fr.ny + c.tangential * fr.nx;
     t += ri * c.tangential + c.rollingTorque;
@@ -73,20 +90,31 @@ template <class MemorySpace, bool Kick> struct ForceFunctor {
     for (int k = 0; k < n; ++k) { // ascending neighbour id: a fixed summation order
       const int j = index(i, k);
       const double rj = radius(j);
+      const double dx = s.periodic.minimumImage(x(j, 0) - xi);
+      const double dy = x(j, 1) - yi;
+      const double radsum = ri + rj;
       ContactFrame fr;
-      if (!pairFrame(s.periodic.minimumImage(x(j, 0) - xi), x(j, 1) - yi, v(j, 0) - vxi,
-                     v(j, 1) - vyi, ri, rj, wi, w(j), fr)) {
-        shear(i, k) = 0.0;
-        slotFn(i, k) = 0.0;
-        slotFt(i, k) = 0.0;
+      // distance first: a slot out of contact loads no velocities (pairFrame repeats the test)
+      if (!(dx * dx + dy * dy < radsum * radsum) ||
+          !pairFrame(dx, dy, v(j, 0) - vxi, v(j, 1) - vyi, ri, rj, wi, w(j), fr)) {
+        if (Sample) {
+          slotFn(i, k) = 0.0;
+          slotFt(i, k) = 0.0;
+        } else if (shear(i, k) != 0.0) { // history ends with the contact
+          shear(i, k) = 0.0;
+        }
         continue;
       }
       const double rr = s.particle.rolling ? rollingRadius(ri, rj) : 0.0;
-      const ContactForce c = evaluateContact(s.particle, fr, effectiveMass(mi, mass(j)), rr,
-                                             wi - w(j), shear(i, k), s.dt, s.updateHistory);
-      shear(i, k) = c.shear;
-      slotFn(i, k) = c.normal;
-      slotFt(i, k) = c.tangential;
+      const ContactForce c =
+          evaluateContact(s.particle, fr, effectiveMass(mi, mass(j)), rr, wi - w(j), shear(i, k),
+                          s.dt, Sample ? false : s.updateHistory);
+      if (Sample) {
+        slotFn(i, k) = c.normal;
+        slotFt(i, k) = c.tangential;
+      } else {
+        shear(i, k) = c.shear;
+      }
       fx += -c.normal * fr.nx + c.tangential * (-fr.ny);
       fy += -c.normal * fr.ny + c.tangential * fr.nx;
       t += ri * c.tangential + c.rollingTorque;
@@ -99,6 +127,9 @@ template <class MemorySpace, bool Kick> struct ForceFunctor {
     for (int k = 0; k < s.walls.numFlat; ++k) {
       const bool touching = flatFrame(s.walls.flat[k], xi, yi, vxi, vyi, wi, ri, fr);
       wallContact(i, 1 + k, touching, fr, mi, ri, wi, fx, fy, t);
+    }
+    if (Sample) {
+      return;
     }
     fx += mi * s.gravityX;
     fy += mi * s.gravityY;
@@ -114,7 +145,7 @@ template <class MemorySpace, bool Kick> struct ForceFunctor {
   }
 };
 
-template <bool Kick, class ExecutionSpace, class MemorySpace>
+template <bool Kick, bool Sample = false, class ExecutionSpace, class MemorySpace>
 void launchForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
                   NeighborList<MemorySpace> const& list, WallContactState<MemorySpace> const& walls,
                   ForceSettings const& settings,
@@ -122,7 +153,7 @@ void launchForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const
                   Kokkos::View<double*, MemorySpace> const& angularVelocityOut, const char* label) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::dem::computeForces: particle memory not accessible");
-  ForceFunctor<MemorySpace, Kick> fun;
+  ForceFunctor<MemorySpace, Kick, Sample> fun;
   fun.x = p.position;
   fun.v = p.velocity;
   fun.f = p.force;
@@ -144,7 +175,13 @@ void launchForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const
   fun.wallFt = walls.tangentialForce;
   fun.s = settings;
   fun.capacity = list.capacity();
-  Kokkos::parallel_for(label, Kokkos::RangePolicy<ExecutionSpace>(space, 0, p.count()), fun);
+  // dynamic chunks: particles differ in contact count, and on a busy machine a thread that is
+  // descheduled for a while leaves its remaining chunks to the others instead of stalling them
+  Kokkos::parallel_for(
+      label,
+      Kokkos::RangePolicy<ExecutionSpace, Kokkos::Schedule<Kokkos::Dynamic>>(space, 0, p.count())
+          .set_chunk_size(forceChunk),
+      fun);
 }
 
 } // namespace detail
@@ -157,6 +194,29 @@ void computeForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> cons
                    WallContactState<MemorySpace> const& walls, ForceSettings const& settings) {
   detail::launchForces<false>(space, p, list, walls, settings, p.velocity, p.angularVelocity,
                               "hikiln::dem::computeForces");
+}
+
+/// \brief The contact forces of the current state, for samplers (stress, wall shear): F_n and F_t
+/// of every neighbour slot into list.normalForce / list.tangentialForce (zero when not touching)
+/// and of every wall slot into walls.normalForce / walls.tangentialForce, all of which must be
+/// allocated (NeighborList::allocateOptional(); rows x list.capacity(), and n x wallSlotCount).
+/// Evaluated from the positions, velocities and stored history without advancing the history, so
+/// nothing of the state changes. Called between steps they are the forces at x^n, v^n; the last
+/// step used its half-step velocities, so damping parts differ by O(dt) from the step's values.
+template <class ExecutionSpace, class MemorySpace>
+void computeContactForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
+                          NeighborList<MemorySpace> const& list,
+                          WallContactState<MemorySpace> const& walls,
+                          ForceSettings const& settings) {
+  if (list.normalForce.extent(0) < p.count() || list.tangentialForce.extent(0) < p.count() ||
+      list.normalForce.extent(1) != list.index.extent(1) ||
+      list.tangentialForce.extent(1) != list.index.extent(1) ||
+      walls.normalForce.extent(0) < p.count() || walls.tangentialForce.extent(0) < p.count()) {
+    throw std::invalid_argument("hikiln::dem::computeContactForces: force views not allocated "
+                                "to the list's shape");
+  }
+  detail::launchForces<false, true>(space, p, list, walls, settings, p.velocity, p.angularVelocity,
+                                    "hikiln::dem::computeContactForces");
 }
 
 /// \brief Forces and torques as computeForces(), fused with the second half kick: velocityOut and

@@ -1,7 +1,10 @@
 #pragma once
 /// \file Integrator.hpp
 /// \brief Velocity Verlet for translation and rotation (LAMMPS nve/sphere): half kick, drift,
-/// forces, half kick. The second half kick is fused into the force kernel (ForceKernel.hpp).
+/// forces, half kick. The second half kick can be fused into the force kernel (ForceKernel.hpp)
+/// or deferred into the next step's initialIntegrate() (previousHalfDt): the same operations on
+/// the same values in the same order, so both give bitwise the same trajectory. finishHalfKick()
+/// applies a deferred kick on its own (before the velocities are read between steps).
 
 #include "kernels/common/Compat.hpp"
 #include "kernels/dem/ParticleArrays.hpp"
@@ -11,9 +14,38 @@
 
 namespace hikiln::dem {
 
+/// \brief Particles per dynamically scheduled chunk of the integration kernels: dynamic chunks
+/// keep a step going when one thread of a busy machine is descheduled (a static split would make
+/// the others wait for it at the join).
+inline constexpr int integrateChunk = 256;
+
 /// \brief v + (dt/2) f / m for one component (also used for spin with torque and inertia).
 KOKKOS_INLINE_FUNCTION double halfKick(double v, double halfDt, double f, double inverseMass) {
   return v + halfDt * f * inverseMass;
+}
+
+/// \brief Second half kick on its own for particles [0, n): v += halfDt f/m, omega += halfDt T/I.
+template <class ExecutionSpace, class MemorySpace>
+void finishHalfKick(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
+                    double halfDt) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::dem::finishHalfKick: particle memory not accessible");
+  auto v = p.velocity;
+  auto w = p.angularVelocity;
+  auto f = p.force;
+  auto tq = p.torque;
+  auto invM = p.inverseMass;
+  auto invI = p.inverseInertia;
+  Kokkos::parallel_for(
+      "hikiln::dem::finishHalfKick",
+      Kokkos::RangePolicy<ExecutionSpace, Kokkos::Schedule<Kokkos::Dynamic>>(space, 0, p.count())
+          .set_chunk_size(integrateChunk),
+      KOKKOS_LAMBDA(int i) {
+        const double im = invM(i);
+        v(i, 0) = halfKick(v(i, 0), halfDt, f(i, 0), im);
+        v(i, 1) = halfKick(v(i, 1), halfDt, f(i, 1), im);
+        w(i) = halfKick(w(i), halfDt, tq(i), invI(i));
+      });
 }
 
 /// \brief First half of a step for particles [0, n): v += dt/2 f/m, omega += dt/2 T/I,
@@ -22,6 +54,15 @@ KOKKOS_INLINE_FUNCTION double halfKick(double v, double halfDt, double f, double
 template <class ExecutionSpace, class MemorySpace, class ReferenceView>
 double initialIntegrate(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
                         double dt, PeriodicX const& periodic, ReferenceView const& reference) {
+  return initialIntegrate(space, p, dt, periodic, reference, 0.0);
+}
+
+/// \brief As above, first completing the previous step's deferred second half kick with
+/// previousHalfDt (0: none), i.e. v += previousHalfDt f/m before v += dt/2 f/m.
+template <class ExecutionSpace, class MemorySpace, class ReferenceView>
+double initialIntegrate(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
+                        double dt, PeriodicX const& periodic, ReferenceView const& reference,
+                        double previousHalfDt) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::dem::initialIntegrate: particle memory not accessible");
   auto x = p.position;
@@ -32,16 +73,26 @@ double initialIntegrate(ExecutionSpace const& space, ParticleArrays<MemorySpace>
   auto invM = p.inverseMass;
   auto invI = p.inverseInertia;
   const double halfDt = 0.5 * dt;
+  const bool finishPrevious = previousHalfDt != 0.0;
   double maxDisplacement2 = 0.0;
   Kokkos::parallel_reduce(
-      "hikiln::dem::initialIntegrate", Kokkos::RangePolicy<ExecutionSpace>(space, 0, p.count()),
+      "hikiln::dem::initialIntegrate",
+      Kokkos::RangePolicy<ExecutionSpace, Kokkos::Schedule<Kokkos::Dynamic>>(space, 0, p.count())
+          .set_chunk_size(integrateChunk),
       KOKKOS_LAMBDA(int i, double& maxD2) {
         const double im = invM(i);
-        const double vx = halfKick(v(i, 0), halfDt, f(i, 0), im);
-        const double vy = halfKick(v(i, 1), halfDt, f(i, 1), im);
+        const double fx = f(i, 0), fy = f(i, 1), t = tq(i), ii = invI(i);
+        double vx = v(i, 0), vy = v(i, 1), wi = w(i);
+        if (finishPrevious) {
+          vx = halfKick(vx, previousHalfDt, fx, im);
+          vy = halfKick(vy, previousHalfDt, fy, im);
+          wi = halfKick(wi, previousHalfDt, t, ii);
+        }
+        vx = halfKick(vx, halfDt, fx, im);
+        vy = halfKick(vy, halfDt, fy, im);
         v(i, 0) = vx;
         v(i, 1) = vy;
-        w(i) = halfKick(w(i), halfDt, tq(i), invI(i));
+        w(i) = halfKick(wi, halfDt, t, ii);
         const double nx = periodic.wrap(x(i, 0) + dt * vx);
         const double ny = x(i, 1) + dt * vy;
         x(i, 0) = nx;

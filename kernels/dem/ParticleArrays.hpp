@@ -197,4 +197,19 @@ void updateInverseMassProperties(ExecutionSpace const& space,
       });
 }
 
+/// \brief to(i, :) = from(i, :) for i in [0, n) as a kernel on `space` (unlike a host deep_copy,
+/// which may run on other threads than the space's).
+template <class ExecutionSpace, class MemorySpace>
+void copyPositions(ExecutionSpace const& space, Kokkos::View<double* [2], MemorySpace> const& from,
+                   Kokkos::View<double* [2], MemorySpace> const& to, std::size_t n) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::dem::copyPositions: memory not accessible");
+  Kokkos::parallel_for(
+      "hikiln::dem::copyPositions", Kokkos::RangePolicy<ExecutionSpace>(space, 0, n),
+      KOKKOS_LAMBDA(int i) {
+        to(i, 0) = from(i, 0);
+        to(i, 1) = from(i, 1);
+      });
+}
+
 } // namespace hikiln::dem

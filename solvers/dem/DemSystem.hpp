@@ -4,22 +4,31 @@
 ///
 /// Design
 /// - Step (velocity Verlet, LAMMPS nve/sphere order), two launches without a rebuild:
-///   1. initialIntegrate: v += dt/2 F/m, omega += dt/2 T/I, x += dt v, and a max-reduction of the
-///      displacement since the last list build;
+///   1. initialIntegrate: the previous step's deferred second half kick, then v += dt/2 F/m,
+///      omega += dt/2 T/I, x += dt v, and a max-reduction of the displacement since the last list
+///      build;
 ///   2. if that exceeds skin/2 (or a rebuild was asked for): rebuild the neighbour list;
-///   3. computeForcesAndKick: contact + wall + gravity forces at the new positions with the
-///      half-step velocities, fused with the second half kick. Neighbours' velocities are read
-///      while a particle's own is updated, so the kick writes a second velocity buffer and the
-///      two are swapped afterwards.
-///   Between steps the state is x^n, v^n, omega^n, F^n, T^n (what diagnostics and exports see).
+///   3. computeForces: contact + wall + gravity forces at the new positions with the half-step
+///      velocities.
+///   The second half kick v += dt/2 F/m of step n is deferred into step n+1's first launch (the
+///   force kernel reads neighbours' velocities, so kicking there needs a second velocity buffer).
+///   Every accessor that exposes the state applies a pending kick first (finishHalfKick), so
+///   between steps callers see x^n, v^n, omega^n, F^n, T^n as before; the arithmetic is the same
+///   in both paths, so the trajectory is bitwise the same whether or not anyone looked.
 /// - Neighbour list: a uniform cell grid (cell >= largest diameter + skin) over the particle
-///   bounds; a FULL list with fixed-capacity rows (overflow is an exception, never silent); each
-///   row is sorted by neighbour id.
+///   bounds; a FULL list of rows sorted by neighbour id, rebuilt in place (NeighborList.hpp).
+///   Rows are as wide as the longest row needs; the configured neighborCapacity is the limit
+///   (overflow is an exception, never silent).
 /// - History: one tangential displacement per row slot (and one per particle and wall). The two
 ///   copies of a pair's history evolve identically because every pair quantity is computed so
 ///   that it is bitwise the same from both sides. A rebuild carries each slot's history over by
 ///   neighbour id; a reorder (sortByCell, every sortEveryRebuilds rebuilds) permutes particles and
-///   history rows together and then rebuilds.
+///   history rows together (indices remapped) and then rebuilds.
+/// - Memory (about 250-300 bytes per particle): particles 120, list 4 + 12 per slot, wall history
+///   40, build positions 16, cell bins ~10-20. Per-contact forces are not kept by the step; the
+///   compatibility views of neighborList()/wallContacts() (neighbour ids, contact forces) are
+///   allocated and filled on first use, forces re-evaluated for the current state
+///   (computeContactForces()). Reordering permutes one field at a time (no second particle set).
 /// - Determinism: each particle sums its own force in id order and writes only its own data, so
 ///   results are bitwise identical for any thread count, and independent of when rebuilds and
 ///   reorders happen (non-touching slots contribute nothing). Hence exportState()/importState()
@@ -46,6 +55,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -78,8 +88,9 @@ public:
   /// \brief A system with no particles yet; validates the configuration.
   explicit DemSystem(DemConfig config, ExecutionSpace space = ExecutionSpace())
       : _config(std::move(config)), _space(std::move(space)) {
-    if (_config.neighborCapacity < 1) {
-      throw std::invalid_argument("hikiln::dem::DemConfig: neighborCapacity must be >= 1");
+    if (_config.neighborCapacity < 1 || _config.neighborCapacity > maxNeighborCapacity) {
+      throw std::invalid_argument("hikiln::dem::DemConfig: neighborCapacity must be in [1, " +
+                                  std::to_string(maxNeighborCapacity) + "]");
     }
     if (_config.walls.drum.enabled && !(_config.walls.drum.radius > 0.0)) {
       throw std::invalid_argument("hikiln::dem::DemConfig: drum radius must be > 0");
@@ -127,7 +138,7 @@ public:
     _particles = copyParticles<memory_space>(host);
     updateInverseMassProperties(_space, _particles);
     allocateContactState(
-        NeighborList<memory_space>(_particles.capacity(), _config.neighborCapacity, _space));
+        NeighborList<memory_space>::lean(_particles.capacity(), initialWidth(), _space));
     Kokkos::deep_copy(_space, _particles.force, 0.0);
     Kokkos::deep_copy(_space, _particles.torque, 0.0);
     _step = 0;
@@ -140,19 +151,20 @@ public:
     _space.fence();
   }
 
-  /// \brief Advances one time step.
+  /// \brief Advances one time step (its second half kick is applied by the next step or the next
+  /// accessor that exposes the state, see the file comment).
   void step() {
     requireParticles();
-    const double d2 =
-        initialIntegrate(_space, _particles, _settings.dt, _settings.periodic, _buildPosition);
+    const double d2 = initialIntegrate(_space, _particles, _settings.dt, _settings.periodic,
+                                       _buildPosition, _pendingHalfDt);
+    _pendingHalfDt = 0.0;
     if (_rebuildRequested || d2 > 0.25 * _skin * _skin) {
       rebuild(sortDue());
     }
-    computeForcesAndKick(_space, _particles, _list, _walls, _settings, _velocityNext,
-                         _angularVelocityNext);
-    std::swap(_particles.velocity, _velocityNext);
-    std::swap(_particles.angularVelocity, _angularVelocityNext);
+    computeForces(_space, _particles, _list, _walls, _settings);
+    _pendingHalfDt = 0.5 * _settings.dt;
     ++_step;
+    ++_version;
     _time += _settings.dt;
   }
 
@@ -180,12 +192,14 @@ public:
   void setDrumAngularVelocity(double omega) {
     _config.walls.drum.angularVelocity = omega;
     _settings.walls.drum.angularVelocity = omega;
+    ++_version;
   }
 
   /// \brief Sets the gravity vector (m/s^2) from now on.
   void setGravity(double gx, double gy) {
     _config.gravityX = _settings.gravityX = gx;
     _config.gravityY = _settings.gravityY = gy;
+    ++_version;
   }
 
   /// \brief Sets the time step (s) from now on (velocity Verlet may change dt between steps).
@@ -193,18 +207,20 @@ public:
     if (!(dt > 0.0)) {
       throw std::invalid_argument("hikiln::dem::DemSystem: time step must be > 0");
     }
+    synchronize(); // the pending half kick belongs to the old step size
     _config.timeStep = _settings.dt = dt;
   }
 
   /// \brief Copies the state needed to continue the run bitwise identically to the host.
   DemState exportState() const {
     requireParticles();
+    synchronize();
     _space.fence();
     const std::size_t n = _particles.count();
     const auto p = copyParticles<Kokkos::HostSpace>(_particles);
     const auto wallShear = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, _walls.shear);
     const auto count = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, _list.count);
-    const auto nid = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, _list.neighborId);
+    const auto index = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, _list.index);
     const auto shear = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, _list.shear);
     DemState s;
     s.step = _step;
@@ -228,7 +244,7 @@ public:
       for (int k = 0; k < rowCount; ++k) {
         if (shear(i, k) != 0.0) {
           s.contactId.push_back(p.id(i));
-          s.contactNeighborId.push_back(nid(i, k));
+          s.contactNeighborId.push_back(p.id(index(i, k)));
           s.contactShear.push_back(shear(i, k));
         }
       }
@@ -238,7 +254,7 @@ public:
 
   /// \brief Replaces the whole state by an exported one (no force evaluation: the exported forces
   /// are used), then rebuilds the list with the imported history. Stepping on continues bitwise as
-  /// the exporting system would have. Slot/wall forces read zero until the next step.
+  /// the exporting system would have.
   void importState(const DemState& s) {
     const std::size_t n = s.size();
     const auto bad = [](const char* what) {
@@ -288,22 +304,26 @@ public:
     for (std::size_t c = 0; c < s.contactId.size(); ++c) {
       rows[rowOf(s.contactId[c])].emplace_back(s.contactNeighborId[c], s.contactShear[c]);
     }
-    std::size_t seedCapacity = 1;
+    std::size_t seedWidth = static_cast<std::size_t>(initialWidth());
     for (auto& r : rows) {
       std::sort(r.begin(), r.end());
-      seedCapacity = std::max(seedCapacity, r.size());
+      seedWidth = std::max(seedWidth, r.size());
     }
-    NeighborList<Kokkos::HostSpace> seedHost(n, static_cast<int>(seedCapacity));
+    if (seedWidth > static_cast<std::size_t>(maxNeighborCapacity)) {
+      bad("a particle has more contacts than a neighbour row can hold");
+    }
+    // rows hold indices in this (the imported) particle order, sorted by neighbour id
+    auto seedHost = NeighborList<Kokkos::HostSpace>::lean(n, static_cast<int>(seedWidth));
     for (std::size_t i = 0; i < n; ++i) {
       seedHost.count(i) = static_cast<int>(rows[i].size());
       for (std::size_t k = 0; k < rows[i].size(); ++k) {
-        seedHost.neighborId(i, k) = rows[i][k].first;
+        seedHost.index(i, k) = static_cast<int>(rowOf(rows[i][k].first));
         seedHost.shear(i, k) = rows[i][k].second;
       }
     }
-    NeighborList<memory_space> seed(n, static_cast<int>(seedCapacity), _space);
+    auto seed = NeighborList<memory_space>::lean(n, static_cast<int>(seedWidth), _space);
     Kokkos::deep_copy(seed.count, seedHost.count);
-    Kokkos::deep_copy(seed.neighborId, seedHost.neighborId);
+    Kokkos::deep_copy(seed.index, seedHost.index);
     Kokkos::deep_copy(seed.shear, seedHost.shear);
 
     _particles = copyParticles<memory_space>(host);
@@ -327,25 +347,67 @@ public:
   /// \brief Energies of the current state.
   EnergyReport energy() const {
     requireParticles();
+    synchronize();
     return computeEnergy(_space, _particles, _list, _walls, _settings);
   }
   /// \brief Linear and angular momentum of the current state.
   MomentumReport momentum() const {
     requireParticles();
+    synchronize();
     return computeMomentum(_space, _particles);
   }
 
-  /// \brief Device particle arrays (View handles change on every step: do not keep them).
-  const particles_type& particles() const { return _particles; }
+  /// \brief Device particle arrays of the current state (View handles change when particles are
+  /// reordered: do not keep them across steps).
+  const particles_type& particles() const {
+    synchronize();
+    return _particles;
+  }
   /// \brief Host copy of the particle arrays.
   host_particles_type hostParticles() const {
+    synchronize();
     _space.fence();
     return copyParticles<Kokkos::HostSpace>(_particles);
   }
-  /// \brief The neighbour list with per-slot history and last contact forces.
-  const NeighborList<memory_space>& neighborList() const { return _list; }
-  /// \brief Per-particle wall history and last wall forces.
-  const WallContactState<memory_space>& wallContacts() const { return _walls; }
+  /// \brief The neighbour list with per-slot history, plus the optional views filled for the
+  /// current state: neighbour ids and the contact forces of computeContactForces() (allocated on
+  /// first use, ids refreshed after rebuilds, forces re-evaluated once per step that asks: a force
+  /// evaluation; samplers call it at sample times). Per-step users wanting only rows and history
+  /// take neighborRows().
+  const NeighborList<memory_space>& neighborList() const {
+    requireParticles();
+    refreshContactViews();
+    return _published;
+  }
+  /// \brief Per-particle wall history and the wall contact forces of the current state (as
+  /// neighborList(), evaluated on demand).
+  const WallContactState<memory_space>& wallContacts() const {
+    requireParticles();
+    refreshContactViews();
+    return _publishedWalls;
+  }
+  /// \brief The neighbour list as the step uses it (count, index, shear; no optional views).
+  /// Indices refer to particles() order; ids are particles().id(index(i, k)).
+  const NeighborList<memory_space>& neighborRows() const { return _list; }
+  /// \brief Bytes held by the system's Views (particles, list, walls, bins, build positions and
+  /// any optional views allocated by neighborList()/wallContacts()).
+  std::size_t memoryBytes() const {
+    const auto bytes = [](const auto& v) {
+      return v.span() * sizeof(typename std::decay_t<decltype(v)>::value_type);
+    };
+    const particles_type& p = _particles;
+    std::size_t total = bytes(p.position) + bytes(p.velocity) + bytes(p.angularVelocity) +
+                        bytes(p.force) + bytes(p.torque) + bytes(p.radius) + bytes(p.mass) +
+                        bytes(p.inertia) + bytes(p.inverseMass) + bytes(p.inverseInertia) +
+                        bytes(p.id);
+    total += bytes(_buildPosition) + _list.bytes() + bytes(_walls.shear);
+    total += bytes(_bins.cellOfParticle) + bytes(_bins.cellCount) + bytes(_bins.cellOffset) +
+             bytes(_bins.cellParticles);
+    total += bytes(_published.neighborId) + bytes(_published.normalForce) +
+             bytes(_published.tangentialForce) + bytes(_publishedWalls.normalForce) +
+             bytes(_publishedWalls.tangentialForce);
+    return total;
+  }
   /// \brief Coefficients, walls, gravity and dt as the kernels see them.
   const ForceSettings& forceSettings() const { return _settings; }
   /// \brief The configuration (with normalised wall normals and current omega, gravity, dt).
@@ -392,25 +454,82 @@ private:
     }
   }
 
-  // Scratch buffers, list and wall state sized like _particles; `previous` seeds the history.
+  // List, wall history and build positions sized like _particles; `previous` seeds the history.
   void allocateContactState(NeighborList<memory_space> previous) {
     const std::size_t cap = _particles.capacity();
-    _scratch = particles_type(_space, cap, _particles.count());
-    _velocityNext = Kokkos::View<double* [2], memory_space>(
-        Kokkos::view_alloc(_space, std::string("hikiln::dem::velocityNext")), cap);
-    _angularVelocityNext = Kokkos::View<double*, memory_space>(
-        Kokkos::view_alloc(_space, std::string("hikiln::dem::spinNext")), cap);
     _buildPosition = Kokkos::View<double* [2], memory_space>(
         Kokkos::view_alloc(_space, std::string("hikiln::dem::buildPosition")), cap);
     _list = std::move(previous);
-    _listSpare = NeighborList<memory_space>(cap, _config.neighborCapacity, _space);
-    _walls = WallContactState<memory_space>(cap, _space);
-    _wallsSpare = WallContactState<memory_space>(cap, _space);
+    _walls = leanWallState(cap);
     _bins = CellBins<memory_space>();
+    _published = NeighborList<memory_space>();
+    _publishedWalls = WallContactState<memory_space>();
+    _pendingHalfDt = 0.0;
+    ++_version;
     _rebuildCount = 0;
     _sortCount = 0;
     _rebuildRequested = false;
     _ready = true;
+  }
+
+  // Wall history only (the force views stay empty until wallContacts() asks for them).
+  WallContactState<memory_space> leanWallState(std::size_t capacity) const {
+    WallContactState<memory_space> w;
+    w.shear = Kokkos::View<double* [wallSlotCount], memory_space>(
+        Kokkos::view_alloc(_space, std::string("hikiln::dem::wallShear")), capacity);
+    return w;
+  }
+
+  // Replaces list and wall state; the published views drop their handles to the old ones (so the
+  // old allocations are released now) and are refreshed on their next use.
+  void adoptContactState(NeighborList<memory_space> list, WallContactState<memory_space> walls) {
+    _list = std::move(list);
+    _walls = std::move(walls);
+    _published.count = _list.count;
+    _published.index = _list.index;
+    _published.shear = _list.shear;
+    _publishedWalls.shear = _walls.shear;
+    ++_version;
+  }
+
+  // Row width to start with: rows grow on demand up to the configured limit.
+  int initialWidth() const { return std::min(_config.neighborCapacity, 8); }
+
+  // Applies the pending second half kick of the last step (see the file comment).
+  void synchronize() const {
+    if (_pendingHalfDt != 0.0) {
+      finishHalfKick(_space, _particles, _pendingHalfDt);
+      _pendingHalfDt = 0.0;
+    }
+  }
+
+  // Fills the optional views of _published/_publishedWalls for the current state.
+  void refreshContactViews() const {
+    synchronize();
+    if (_publishedVersion == _version) {
+      return;
+    }
+    const bool reshaped = _published.normalForce.extent(0) != _list.rows() ||
+                          _published.normalForce.extent(1) != _list.index.extent(1);
+    _published.count = _list.count;
+    _published.index = _list.index;
+    _published.shear = _list.shear;
+    if (reshaped) {
+      _published.allocateOptional(_space);
+    }
+    _publishedWalls.shear = _walls.shear;
+    if (_publishedWalls.normalForce.extent(0) != _walls.shear.extent(0)) {
+      const std::size_t cap = _walls.shear.extent(0);
+      using WallView = Kokkos::View<double* [wallSlotCount], memory_space>;
+      _publishedWalls.normalForce =
+          WallView(Kokkos::view_alloc(_space, std::string("hikiln::dem::wallNormalForce")), cap);
+      _publishedWalls.tangentialForce = WallView(
+          Kokkos::view_alloc(_space, std::string("hikiln::dem::wallTangentialForce")), cap);
+    }
+    // a free kernel function: CUDA extended lambdas may not sit in a private member function
+    fillNeighborIds(_space, _particles.count(), _list, _particles.id, _published.neighborId);
+    computeContactForces(_space, _particles, _published, _publishedWalls, _settings);
+    _publishedVersion = _version;
   }
 
   // Skin, cell size and time step from the particle set (host copy).
@@ -444,31 +563,36 @@ private:
     const CellGrid grid =
         makeCellGrid(b.xmin, b.xmax, b.ymin, b.ymax, _cellSize, _settings.periodic, 4 * n + 4096);
     binParticles(_space, grid, _particles.position, n, _bins);
+    ++_version;
     if (sort) {
-      if (_listSpare.capacity() != _list.capacity() || _listSpare.rows() != _list.rows()) {
-        _listSpare = NeighborList<memory_space>(_list.rows(), _list.capacity(), _space);
-      }
-      permuteParticles(_space, _bins.cellParticles, _particles, _scratch);
-      permuteContactRows(_space, _bins.cellParticles, n, _list, _listSpare, _walls, _wallsSpare);
-      _particles.swap(_scratch);
-      std::swap(_list, _listSpare);
-      std::swap(_walls, _wallsSpare);
+      // one field at a time; the rows follow with their indices remapped
+      permuteParticlesInPlace(_space, _bins.cellParticles, _particles);
+      auto list = NeighborList<memory_space>::lean(_list.rows(), _list.capacity(), _space);
+      auto walls = leanWallState(_walls.shear.extent(0));
+      permuteContactRows(_space, _bins.cellParticles, n, _list, list, _walls, walls);
+      adoptContactState(list, walls);
       binParticles(_space, grid, _particles.position, n, _bins);
       ++_sortCount;
     }
-    if (_listSpare.capacity() != _config.neighborCapacity || _listSpare.rows() < n) {
-      _listSpare =
-          NeighborList<memory_space>(_particles.capacity(), _config.neighborCapacity, _space);
+    for (;;) { // rows that did not fit are left as they were: widen and repeat
+      const int maxCount =
+          rebuildNeighborList(_space, _bins, _particles.position, _particles.radius, _particles.id,
+                              n, _skin, _settings.periodic, _list);
+      if (maxCount > _config.neighborCapacity) {
+        _rebuildRequested = true; // rows are still valid; stepping on would retry and fail again
+        throw std::runtime_error(neighborOverflowMessage(maxCount, _config.neighborCapacity));
+      }
+      if (maxCount <= _list.capacity()) {
+        break;
+      }
+      auto wider = NeighborList<memory_space>::lean(
+          _list.rows(), std::min(_config.neighborCapacity, maxCount + 2), _space);
+      copyNeighborRows(_space, n, _list, wider);
+      adoptContactState(wider, _walls);
     }
-    const int maxCount =
-        buildNeighborList(_space, _bins, _particles.position, _particles.radius, _particles.id, n,
-                          _skin, _settings.periodic, _list, _listSpare);
-    if (maxCount > _listSpare.capacity()) {
-      _rebuildRequested = true; // the old list is intact; stepping on would retry and fail again
-      throw std::runtime_error(neighborOverflowMessage(maxCount, _listSpare.capacity()));
-    }
-    std::swap(_list, _listSpare);
-    Kokkos::deep_copy(_space, _buildPosition, _particles.position);
+    // a kernel, not deep_copy: a host deep_copy may run on the default host space's threads
+    // (a free function: CUDA extended lambdas may not sit in a private member function)
+    copyPositions(_space, _particles.position, _buildPosition, n);
     _rebuildRequested = false;
     ++_rebuildCount;
   }
@@ -477,15 +601,16 @@ private:
   ExecutionSpace _space;
   ForceSettings _settings;
   particles_type _particles;
-  particles_type _scratch;
-  Kokkos::View<double* [2], memory_space> _velocityNext;
-  Kokkos::View<double*, memory_space> _angularVelocityNext;
   Kokkos::View<double* [2], memory_space> _buildPosition;
   NeighborList<memory_space> _list;
-  NeighborList<memory_space> _listSpare;
   WallContactState<memory_space> _walls;
-  WallContactState<memory_space> _wallsSpare;
   CellBins<memory_space> _bins;
+  // what neighborList()/wallContacts() hand out: the live rows plus the optional views
+  mutable NeighborList<memory_space> _published;
+  mutable WallContactState<memory_space> _publishedWalls;
+  mutable std::int64_t _publishedVersion = -1;
+  mutable double _pendingHalfDt = 0.0; // deferred second half kick of the last step (0: none)
+  std::int64_t _version = 0;           // bumped whenever state the published views show changes
   double _skin = 0.0;
   double _cellSize = 0.0;
   double _time = 0.0;

@@ -148,35 +148,16 @@ TEST(TEST_CATEGORY, dem_time_step_helper) {
   EXPECT_LT(dt, 3.0e-5);
 }
 
-// One pair evaluated from both sides in a kernel: vectors negate exactly, scalars are identical.
-TEST(TEST_CATEGORY, dem_pair_force_exactly_antisymmetric) {
+// Kernels live in free functions: CUDA extended lambdas may not sit in a gtest TestBody (private).
+// Evaluates each pair of `in` (columns as filled below) from both sides on TEST_EXECSPACE;
+// out(c, side, :) = touching, force x, force y, shear, rolling torque, F_n, F_t.
+Kokkos::View<double* [2][7], TEST_EXECSPACE::memory_space>
+evaluatePairsFromBothSides(Kokkos::View<double* [16], Kokkos::HostSpace> in,
+                           const ContactCoefficients& coeff) {
   using space = TEST_EXECSPACE;
-  constexpr int numCases = 200;
-  Kokkos::View<double* [16], Kokkos::HostSpace> in("hikiln::test::pairIn", numCases);
-  std::mt19937_64 gen(7);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int c = 0; c < numCases; ++c) {
-    const double ri = 0.01 + 0.002 * u(gen), rj = 0.01 + 0.002 * u(gen);
-    const double ang = pi * u(gen);
-    const double d = (ri + rj) * (1.0 - 0.01 * std::fabs(u(gen)));
-    in(c, 0) = 0.3 * u(gen); // x_i
-    in(c, 1) = 0.3 * u(gen);
-    in(c, 2) = in(c, 0) + d * std::cos(ang); // x_j
-    in(c, 3) = in(c, 1) + d * std::sin(ang);
-    for (int k = 4; k < 8; ++k)
-      in(c, k) = u(gen);      // v_i, v_j
-    in(c, 8) = 50.0 * u(gen); // omega_i, omega_j
-    in(c, 9) = 50.0 * u(gen);
-    in(c, 10) = ri;
-    in(c, 11) = rj;
-    in(c, 12) = 1.0e-4 * u(gen); // shared shear history
-  }
+  const int numCases = static_cast<int>(in.extent(0));
   auto inDev = Kokkos::create_mirror_view_and_copy(space::memory_space{}, in);
   Kokkos::View<double* [2][7], space::memory_space> out("hikiln::test::pairOut", numCases);
-  ContactParameters p;
-  p.rolling = RollingModel::ConstantTorque;
-  p.rollingFriction = 0.05;
-  const ContactCoefficients coeff = prepareContact(p);
   Kokkos::parallel_for(
       "hikiln::test::pairAntisymmetry", Kokkos::RangePolicy<space>(space(), 0, numCases),
       KOKKOS_LAMBDA(int c) {
@@ -202,7 +183,36 @@ TEST(TEST_CATEGORY, dem_pair_force_exactly_antisymmetric) {
           out(c, side, 6) = r.tangential;
         }
       });
-  auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, out);
+  return out;
+}
+
+// One pair evaluated from both sides in a kernel: vectors negate exactly, scalars are identical.
+TEST(TEST_CATEGORY, dem_pair_force_exactly_antisymmetric) {
+  constexpr int numCases = 200;
+  Kokkos::View<double* [16], Kokkos::HostSpace> in("hikiln::test::pairIn", numCases);
+  std::mt19937_64 gen(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int c = 0; c < numCases; ++c) {
+    const double ri = 0.01 + 0.002 * u(gen), rj = 0.01 + 0.002 * u(gen);
+    const double ang = pi * u(gen);
+    const double d = (ri + rj) * (1.0 - 0.01 * std::fabs(u(gen)));
+    in(c, 0) = 0.3 * u(gen); // x_i
+    in(c, 1) = 0.3 * u(gen);
+    in(c, 2) = in(c, 0) + d * std::cos(ang); // x_j
+    in(c, 3) = in(c, 1) + d * std::sin(ang);
+    for (int k = 4; k < 8; ++k)
+      in(c, k) = u(gen);      // v_i, v_j
+    in(c, 8) = 50.0 * u(gen); // omega_i, omega_j
+    in(c, 9) = 50.0 * u(gen);
+    in(c, 10) = ri;
+    in(c, 11) = rj;
+    in(c, 12) = 1.0e-4 * u(gen); // shared shear history
+  }
+  ContactParameters p;
+  p.rolling = RollingModel::ConstantTorque;
+  p.rollingFriction = 0.05;
+  auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{},
+                                               evaluatePairsFromBothSides(in, prepareContact(p)));
   int slipping = 0;
   for (int c = 0; c < numCases; ++c) {
     ASSERT_EQ(h(c, 0, 0), 1.0);

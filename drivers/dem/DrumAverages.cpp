@@ -1,0 +1,226 @@
+#include "drivers/dem/DrumAverages.hpp"
+
+#include "drivers/calibrate/PlotScript.hpp"
+#include "drivers/dem/AveragesFile.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <limits>
+#include <stdexcept>
+
+namespace hikiln::dem {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr std::size_t historyColumns = 9; // AveragesConvergence, in declaration order
+
+double relativeChange(double now, double before) {
+  return std::isfinite(before) && before != 0.0 ? std::fabs(now - before) / std::fabs(before) : nan;
+}
+
+// Mean diameter summed in sorted order: the same value whatever the particle order (restarts).
+double meanDiameterOf(const ParticleArrays<Kokkos::HostSpace>& bed) {
+  std::vector<double> d;
+  for (std::size_t i = 0; i < bed.count(); ++i)
+    d.push_back(2.0 * bed.radius(i));
+  std::sort(d.begin(), d.end());
+  double sum = 0.0;
+  for (double v : d)
+    sum += v;
+  return d.empty() ? 0.0 : sum / static_cast<double>(d.size());
+}
+
+std::string shellQuote(const std::string& text) {
+  std::string quoted = "'";
+  for (char ch : text)
+    quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return quoted + "'";
+}
+
+} // namespace
+
+DrumAverages::DrumAverages(const DrumRunSettings& settings, std::string outputDirectory,
+                           io::RunInfo info)
+    : _run(settings), _directory(std::move(outputDirectory)), _info(std::move(info)) {}
+
+void DrumAverages::create(double thickness, double meanDiameter, double fill) {
+  AveragingSettings s;
+  s.drumRadius = _run.fill.drumRadius;
+  s.thickness = thickness;
+  _meanDiameter = meanDiameter;
+  _fill = fill;
+  _averager = std::make_unique<FieldAverager<Space>>(s);
+}
+
+void DrumAverages::start(const ParticleArrays<Kokkos::HostSpace>& bed, double fill) {
+  const double d = meanDiameterOf(bed);
+  create(_run.fill.convention == MassConvention::Sphere ? d : _run.fill.thickness, d, fill);
+  _history.clear();
+}
+
+void DrumAverages::resume(const io::Checkpoint& cp, const ParticleArrays<Kokkos::HostSpace>& bed,
+                          double fill) {
+  if (cp.scalars.count("averages_samples") == 0) {
+    spdlog::warn("the checkpoint holds no averaged fields (an older run): the averages start now");
+    start(bed, fill);
+    return;
+  }
+  create(cp.scalars.at("averages_thickness"), cp.scalars.at("averages_mean_diameter"), fill);
+  AveragingSums sums;
+  sums.polar = cp.reals.at("averages_polar");
+  sums.cartesian = cp.reals.at("averages_cartesian");
+  sums.wall = cp.reals.at("averages_wall");
+  sums.samples = static_cast<std::int64_t>(cp.scalars.at("averages_samples"));
+  sums.slipSum = cp.scalars.at("averages_slip_sum");
+  sums.slipSamples = static_cast<std::int64_t>(cp.scalars.at("averages_slip_samples"));
+  sums.firstTime = cp.scalars.at("averages_first_time");
+  sums.lastTime = cp.scalars.at("averages_last_time");
+  _averager->restore(sums);
+  const std::vector<double>& h = cp.reals.at("averages_history");
+  _history.clear();
+  for (std::size_t r = 0; r + historyColumns <= h.size(); r += historyColumns) {
+    AveragesConvergence c;
+    c.time = h[r];
+    c.samples = static_cast<std::int64_t>(h[r + 1]);
+    c.pressure = h[r + 2];
+    c.shearStress = h[r + 3];
+    c.frictionM = h[r + 4];
+    c.muWall = h[r + 5];
+    c.pressureChange = h[r + 6];
+    c.shearStressChange = h[r + 7];
+    c.frictionMChange = h[r + 8];
+    _history.push_back(c);
+  }
+}
+
+void DrumAverages::sample(const DemSystem<Space>& system, double time) {
+  if (!_averager)
+    throw std::logic_error("hikiln::dem::DrumAverages: sample() before start()/resume()");
+  _averager->sample(system, time);
+}
+
+void DrumAverages::write(double time) {
+  if (!_averager || _averager->samples() == 0)
+    return;
+  if (_written && _last.samples == _averager->samples())
+    return; // nothing new since the last write (the end of the run fell on an interval)
+  _last = _averager->result();
+  _written = true;
+  const AveragesConditions conditions{_run.omega(), _meanDiameter, _run.fill.density, _fill};
+  writeAveragesFile(_directory, _last, conditions, _info);
+  const BedAverage bed = bedAverage(_last.cartesian);
+  AveragesConvergence c;
+  c.time = time;
+  c.samples = _last.samples;
+  c.pressure = bed.pressure;
+  c.shearStress = bed.shearStress;
+  c.frictionM = bed.frictionM;
+  c.muWall = _last.wall.muWall;
+  const AveragesConvergence before =
+      _history.empty() ? AveragesConvergence{0, 0, nan, nan, nan, nan, nan, nan, nan}
+                       : _history.back();
+  c.pressureChange = relativeChange(c.pressure, before.pressure);
+  c.shearStressChange = relativeChange(c.shearStress, before.shearStress);
+  c.frictionMChange = relativeChange(c.frictionM, before.frictionM);
+  _history.push_back(c);
+  spdlog::info("averages: {} samples to {:.1f} s, {} valid cells; bed p {:.4g} Pa, q {:.4g} Pa, "
+               "m {:.3f} (changes {:.1f} / {:.1f} / {:.1f} %), mu_wall {:.3f}, slip {:.1f} %",
+               c.samples, time, bed.validCells, c.pressure, c.shearStress, c.frictionM,
+               100 * c.pressureChange, 100 * c.shearStressChange, 100 * c.frictionMChange, c.muWall,
+               _last.wall.slipPercent);
+}
+
+void DrumAverages::save(io::Checkpoint& cp) const {
+  if (!_averager)
+    return;
+  const AveragingSums sums = _averager->sums();
+  cp.reals["averages_polar"] = sums.polar;
+  cp.reals["averages_cartesian"] = sums.cartesian;
+  cp.reals["averages_wall"] = sums.wall;
+  cp.scalars["averages_samples"] = static_cast<double>(sums.samples);
+  cp.scalars["averages_slip_sum"] = sums.slipSum;
+  cp.scalars["averages_slip_samples"] = static_cast<double>(sums.slipSamples);
+  cp.scalars["averages_first_time"] = sums.firstTime;
+  cp.scalars["averages_last_time"] = sums.lastTime;
+  cp.scalars["averages_thickness"] = _averager->settings().thickness;
+  cp.scalars["averages_mean_diameter"] = _meanDiameter;
+  std::vector<double> h;
+  for (const AveragesConvergence& c : _history) {
+    for (double v : {c.time, static_cast<double>(c.samples), c.pressure, c.shearStress, c.frictionM,
+                     c.muWall, c.pressureChange, c.shearStressChange, c.frictionMChange})
+      h.push_back(v);
+  }
+  cp.reals["averages_history"] = h;
+}
+
+nlohmann::json DrumAverages::summary() const {
+  nlohmann::json j;
+  j["samples"] = _averager ? _averager->samples() : 0;
+  if (!_written) {
+    j["file"] = nullptr;
+    return j;
+  }
+  const BedAverage polar = bedAverage(_last.polar), cartesian = bedAverage(_last.cartesian);
+  j["file"] = "averages.h5";
+  j["average_start_s"] = _last.averageStart;
+  j["average_end_s"] = _last.averageEnd;
+  j["slice_thickness_m"] = _last.thickness;
+  j["mu_wall"] = _last.wall.muWall;
+  j["slip_percent"] = _last.wall.slipPercent;
+  j["valid_cells"] = {{"polar", polar.validCells}, {"cartesian", cartesian.validCells}};
+  j["bed_pressure_pa"] = cartesian.pressure;
+  j["bed_shear_stress_pa"] = cartesian.shearStress;
+  j["bed_friction_m"] = cartesian.frictionM;
+  nlohmann::json history = nlohmann::json::array();
+  for (const AveragesConvergence& c : _history) {
+    history.push_back({{"time_s", c.time},
+                       {"samples", c.samples},
+                       {"pressure_pa", c.pressure},
+                       {"shear_stress_pa", c.shearStress},
+                       {"friction_m", c.frictionM},
+                       {"mu_wall", c.muWall},
+                       {"relative_change_pressure", c.pressureChange},
+                       {"relative_change_shear_stress", c.shearStressChange},
+                       {"relative_change_friction_m", c.frictionMChange}});
+  }
+  j["convergence"] = history;
+  return j;
+}
+
+bool DrumAverages::plot() const {
+  if (!_written)
+    return false;
+  const fs::path script =
+      fs::path(calibrate::calibrationPlotScript()).parent_path() / "plot_fields.py";
+  const fs::path dir(_directory);
+  const std::string command =
+      std::string(calibrate::plotPython) + " " + shellQuote(script.string()) + " --h5 " +
+      shellQuote((dir / "averages.h5").string()) + " --out " + shellQuote((dir / "plots").string());
+  if (!fs::is_regular_file(script)) {
+    spdlog::warn("plot script '{}' not found (set HIKILN_PLOT_SCRIPTS); no field maps. Later: {}",
+                 script.string(), command);
+    return false;
+  }
+  const std::string probe =
+      std::string(calibrate::plotPython) + " -c 'import matplotlib, numpy, h5py' >/dev/null 2>&1";
+  if (std::system(probe.c_str()) != 0) {
+    spdlog::warn("{} cannot import matplotlib, numpy and h5py; no field maps. Later: {}",
+                 calibrate::plotPython, command);
+    return false;
+  }
+  spdlog::info("field maps: {}", command);
+  if (std::system((command + " >/dev/null").c_str()) != 0) {
+    spdlog::warn("the field-map script failed; rerun: {}", command);
+    return false;
+  }
+  return true;
+}
+
+} // namespace hikiln::dem

@@ -1,0 +1,360 @@
+#pragma once
+/// \file ViscousOperator.hpp
+/// \brief The implicit momentum operator on the MAC grid,
+///   A u = alpha u - div(mu (grad u + grad u^T)),
+/// alpha = rho / dt on the faces of each component (>= 0), mu > 0 in cells. Component c at its
+/// face is coupled to itself through the normal stress 2 mu du_c/dx_c (mu at the cells beside
+/// the face) and the shear stresses mu (du_c/dx_a + du_a/dx_c) (mu on the cell edges, averaged
+/// from the four cells around each edge); the du_a/dx_c parts couple the components. The
+/// discretisation is symmetric positive definite (symmetric positive semi-definite when alpha = 0
+/// and every axis is periodic).
+///
+/// Boundaries: tangential components are no-slip with the side's velocity (ghost 2 V - u), the
+/// normal component is given on the boundary faces (stored in the field's boundary nodes; 0 on
+/// coarse levels). Kernels: apply, residual, red-black Gauss-Seidel per component, edge
+/// viscosities.
+
+#include "kernels/cfd/AxisClosure.hpp"
+#include "kernels/cfd/BoxSplit.hpp"
+#include "kernels/cfd/Grid.hpp"
+
+#include <Kokkos_Core.hpp>
+
+#include <cstdint>
+
+namespace hikiln::cfd {
+
+/// \brief The MAC velocity components u, v, w (w unused in 2D).
+template <class MemorySpace> struct VelocityFields { Field<MemorySpace> comp[3]; };
+
+/// \brief Slot of the edge viscosity normal-centred along axes a and b (a != b): 0 = XY, 1 = XZ,
+/// 2 = YZ.
+KOKKOS_INLINE_FUNCTION constexpr int edgeSlot(int a, int b) {
+  return a + b - 1;
+}
+
+/// \brief The staggering of edge slot s.
+KOKKOS_INLINE_FUNCTION constexpr Staggering edgeStaggering(int slot) {
+  return slot == 0 ? Staggering::EdgeXY : (slot == 1 ? Staggering::EdgeXZ : Staggering::EdgeYZ);
+}
+
+/// \brief The operator alpha u - div(mu (grad u + grad u^T)) with its boundary closures
+/// (axis[component][axis]).
+template <class MemorySpace> struct ViscousOperator {
+  using memory_space = MemorySpace;
+  Grid grid;
+  AxisClosure axis[3][3];
+  Field<MemorySpace> alpha[3];  ///< per component on its faces; empty: alpha = 0
+  Field<MemorySpace> mu;        ///< cell-centred viscosity
+  Field<MemorySpace> muEdge[3]; ///< edge viscosities (edgeSlot)
+
+  /// \brief Number of velocity components (2 or 3).
+  KOKKOS_INLINE_FUNCTION int numComponents() const { return grid.is3D() ? 3 : 2; }
+  /// \brief True when the operator has an alpha term.
+  KOKKOS_INLINE_FUNCTION bool hasAlpha() const { return alpha[0].extent(0) > 0; }
+};
+
+/// \brief Splits (A u)_C at unknown (i, j, k) of component C (Dims axes) into diag * u_c(i, j, k) -
+/// rest: rest holds the neighbours of the same component, the other components (shear coupling)
+/// and, when affine, the boundary values. Interior: no neighbour, viscosity or coupling read needs
+/// a boundary closure or wrap-around (see componentSplit).
+template <bool Interior, int Dims, int C, class MemorySpace>
+KOKKOS_INLINE_FUNCTION void viscousStencil(ViscousOperator<MemorySpace> const& op,
+                                           GridScales const& scale,
+                                           VelocityFields<MemorySpace> const& vel, int i, int j,
+                                           int k, bool affine, double& diag, double& rest) {
+  constexpr int c = C;
+  const int off[3] = {op.grid.ghost, op.grid.ghost, op.grid.ghostZ()};
+  const int idx[3] = {i, j, k};
+  const auto& x = vel.comp[c];
+  diag = op.hasAlpha() ? op.alpha[c](i + off[0], j + off[1], k + off[2]) : 0.0;
+  rest = 0.0;
+  for (int a = 0; a < Dims; ++a) {
+    const AxisClosure& ax = op.axis[c][a];
+    double cu, cd;
+    if (a == c) {
+      // normal stress: 2 mu in the cells above and below the face
+      int cell[3] = {i, j, k};
+      cell[a] = idx[a];
+      cu = 2.0 * op.mu(cell[0] + off[0], cell[1] + off[1], cell[2] + off[2]);
+      cell[a] = wrapOf<Interior>(ax, idx[a] - 1);
+      cd = 2.0 * op.mu(cell[0] + off[0], cell[1] + off[1], cell[2] + off[2]);
+    } else {
+      // shear stress on the (c, a) edges above and below along a
+      const auto& me = op.muEdge[edgeSlot(a < c ? a : c, a < c ? c : a)];
+      int e[3] = {i, j, k};
+      e[a] = idx[a] + 1;
+      cu = me(e[0] + off[0], e[1] + off[1], e[2] + off[2]);
+      e[a] = idx[a];
+      cd = me(e[0] + off[0], e[1] + off[1], e[2] + off[2]);
+      // coupling: d u_a / d x_c on those edges (u_a is node-centred along a, cell-centred along c)
+      const auto& ua = vel.comp[a];
+      const AxisClosure& alongA = op.axis[a][a];
+      const AxisClosure& alongC = op.axis[a][c];
+      int p[3] = {i, j, k};
+      const int cAbove = idx[c];
+      const int cBelow = wrapOf<Interior>(alongC, idx[c] - 1);
+      p[a] = wrapOf<Interior>(alongA, idx[a] + 1);
+      p[c] = cAbove;
+      const double upHigh = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
+      p[c] = cBelow;
+      const double upLow = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
+      p[a] = idx[a];
+      p[c] = cAbove;
+      const double dnHigh = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
+      p[c] = cBelow;
+      const double dnLow = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
+      rest += (cu * (upHigh - upLow) - cd * (dnHigh - dnLow)) * scale.invMixed[a][c];
+    }
+    const double inv2 = scale.inv2[a];
+    cu *= inv2;
+    cd *= inv2;
+    const Neighbour up = upOf<Interior>(ax, idx[a], affine);
+    const Neighbour dn = downOf<Interior>(ax, idx[a], affine);
+    diag += cu * up.diag + cd * dn.diag;
+    int q[3] = {i, j, k};
+    q[a] = up.index;
+    rest += cu * (up.off * x(q[0] + off[0], q[1] + off[1], q[2] + off[2]) + up.lift);
+    q[a] = dn.index;
+    rest += cd * (dn.off * x(q[0] + off[0], q[1] + off[1], q[2] + off[2]) + dn.lift);
+  }
+}
+
+/// \brief Interior/shell split of the unknowns of component c: the interior excludes the first
+/// and last unknown along every active axis, so no read there needs a closure or wrap-around.
+template <class MemorySpace>
+BoxSplit componentSplit(ViscousOperator<MemorySpace> const& op, int c) {
+  const int lo[3] = {op.axis[c][0].begin(), op.axis[c][1].begin(), op.axis[c][2].begin()};
+  const int hi[3] = {op.axis[c][0].end(), op.axis[c][1].end(), op.axis[c][2].end()};
+  return splitUnknowns(op.grid, lo, hi);
+}
+
+namespace detail {
+
+/// \brief out_C = (A u)_C (see applyViscousOperator).
+template <int Dims, int C, class ExecutionSpace, class MemorySpace>
+void applyViscousComponent(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
+                           VelocityFields<MemorySpace> const& u,
+                           VelocityFields<MemorySpace> const& out, bool affine) {
+  const int g = op.grid.ghost;
+  const int gz = op.grid.ghostZ();
+  const auto y = out.comp[C];
+  const auto x = u.comp[C];
+  const BoxSplit split = componentSplit(op, C);
+  const GridScales scale(op.grid);
+  if (split.interiorSize() > 0) {
+    Kokkos::parallel_for(
+        "hikiln::cfd::applyViscousOperator::interior",
+        gridPolicy(space, split.interiorLo, split.interiorHi),
+        KOKKOS_LAMBDA(const int i, const int j, const int k) {
+          double diag, rest;
+          viscousStencil<true, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
+          y(i + g, j + g, k + gz) = diag * x(i + g, j + g, k + gz) - rest;
+        });
+  }
+  if (split.shellSize() > 0) {
+    Kokkos::parallel_for(
+        "hikiln::cfd::applyViscousOperator::shell",
+        Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
+        KOKKOS_LAMBDA(const std::int64_t s) {
+          int i, j, k;
+          split.shellCell(s, i, j, k);
+          double diag, rest;
+          viscousStencil<false, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
+          y(i + g, j + g, k + gz) = diag * x(i + g, j + g, k + gz) - rest;
+        });
+  }
+}
+
+/// \brief r_C = f_C - (A u)_C; returns the sum of r_C^2 (see viscousResidual).
+template <int Dims, int C, class ExecutionSpace, class MemorySpace>
+double viscousResidualComponent(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
+                                VelocityFields<MemorySpace> const& u,
+                                VelocityFields<MemorySpace> const& f,
+                                VelocityFields<MemorySpace> const& r, bool affine) {
+  const int g = op.grid.ghost;
+  const int gz = op.grid.ghostZ();
+  const auto x = u.comp[C];
+  const auto rhs = f.comp[C];
+  const auto res = r.comp[C];
+  const BoxSplit split = componentSplit(op, C);
+  const GridScales scale(op.grid);
+  double interior = 0.0, shell = 0.0;
+  if (split.interiorSize() > 0) {
+    Kokkos::parallel_reduce(
+        "hikiln::cfd::viscousResidual::interior",
+        gridPolicy(space, split.interiorLo, split.interiorHi),
+        KOKKOS_LAMBDA(const int i, const int j, const int k, double& sum) {
+          double diag, rest;
+          viscousStencil<true, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
+          const double value = rhs(i + g, j + g, k + gz) - (diag * x(i + g, j + g, k + gz) - rest);
+          res(i + g, j + g, k + gz) = value;
+          sum += value * value;
+        },
+        interior);
+  }
+  if (split.shellSize() > 0) {
+    Kokkos::parallel_reduce(
+        "hikiln::cfd::viscousResidual::shell",
+        Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
+        KOKKOS_LAMBDA(const std::int64_t s, double& sum) {
+          int i, j, k;
+          split.shellCell(s, i, j, k);
+          double diag, rest;
+          viscousStencil<false, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
+          const double value = rhs(i + g, j + g, k + gz) - (diag * x(i + g, j + g, k + gz) - rest);
+          res(i + g, j + g, k + gz) = value;
+          sum += value * value;
+        },
+        shell);
+  }
+  return interior + shell;
+}
+
+/// \brief One colour of the red-black sweep over component C (see smoothViscousColour).
+template <int Dims, int C, class ExecutionSpace, class MemorySpace>
+void smoothViscousComponent(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
+                            VelocityFields<MemorySpace> const& u,
+                            VelocityFields<MemorySpace> const& f, int colour, bool affine) {
+  const int g = op.grid.ghost;
+  const int gz = op.grid.ghostZ();
+  const auto x = u.comp[C];
+  const auto rhs = f.comp[C];
+  const BoxSplit split = componentSplit(op, C);
+  const GridScales scale(op.grid);
+  const int i0 = split.interiorLo[0];
+  const int i1 = split.interiorHi[0];
+  if (split.interiorSize() > 0) {
+    Kokkos::parallel_for(
+        "hikiln::cfd::smoothViscousColour::interior",
+        gridPolicy(space, {0, split.interiorLo[1], split.interiorLo[2]},
+                   {(i1 - i0 + 1) / 2, split.interiorHi[1], split.interiorHi[2]}),
+        KOKKOS_LAMBDA(const int pair, const int j, const int k) { // `half` is a CUDA type
+          const int i = i0 + 2 * pair + ((colour + i0 + j + k) & 1);
+          if (i < i1) {
+            double diag, rest;
+            viscousStencil<true, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
+            x(i + g, j + g, k + gz) = (rhs(i + g, j + g, k + gz) + rest) / diag;
+          }
+        });
+  }
+  if (split.shellSize() > 0) {
+    Kokkos::parallel_for(
+        "hikiln::cfd::smoothViscousColour::shell",
+        Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
+        KOKKOS_LAMBDA(const std::int64_t s) {
+          int i, j, k;
+          split.shellCell(s, i, j, k);
+          if (((i + j + k) & 1) == colour) {
+            double diag, rest;
+            viscousStencil<false, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
+            x(i + g, j + g, k + gz) = (rhs(i + g, j + g, k + gz) + rest) / diag;
+          }
+        });
+  }
+}
+
+} // namespace detail
+
+/// \brief out = A u for every component (affine: with the boundary values).
+template <class ExecutionSpace, class MemorySpace>
+void applyViscousOperator(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
+                          VelocityFields<MemorySpace> const& u,
+                          VelocityFields<MemorySpace> const& out, bool affine) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::cfd::applyViscousOperator: fields not accessible");
+  if (op.grid.is3D()) {
+    detail::applyViscousComponent<3, 0>(space, op, u, out, affine);
+    detail::applyViscousComponent<3, 1>(space, op, u, out, affine);
+    detail::applyViscousComponent<3, 2>(space, op, u, out, affine);
+  } else {
+    detail::applyViscousComponent<2, 0>(space, op, u, out, affine);
+    detail::applyViscousComponent<2, 1>(space, op, u, out, affine);
+  }
+}
+
+/// \brief r = f - A u for every component; returns the sum of r^2 over all unknowns.
+template <class ExecutionSpace, class MemorySpace>
+double viscousResidual(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
+                       VelocityFields<MemorySpace> const& u, VelocityFields<MemorySpace> const& f,
+                       VelocityFields<MemorySpace> const& r, bool affine) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::cfd::viscousResidual: fields not accessible");
+  if (op.grid.is3D()) {
+    return detail::viscousResidualComponent<3, 0>(space, op, u, f, r, affine) +
+           detail::viscousResidualComponent<3, 1>(space, op, u, f, r, affine) +
+           detail::viscousResidualComponent<3, 2>(space, op, u, f, r, affine);
+  }
+  return detail::viscousResidualComponent<2, 0>(space, op, u, f, r, affine) +
+         detail::viscousResidualComponent<2, 1>(space, op, u, f, r, affine);
+}
+
+/// \brief One colour of a red-black Gauss-Seidel sweep over component c (the other components
+/// held fixed): every unknown with (i + j + k) % 2 == colour is solved for.
+template <class ExecutionSpace, class MemorySpace>
+void smoothViscousColour(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
+                         VelocityFields<MemorySpace> const& u, VelocityFields<MemorySpace> const& f,
+                         int c, int colour, bool affine) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::cfd::smoothViscousColour: fields not accessible");
+  if (op.grid.is3D()) {
+    if (c == 0) {
+      detail::smoothViscousComponent<3, 0>(space, op, u, f, colour, affine);
+    } else if (c == 1) {
+      detail::smoothViscousComponent<3, 1>(space, op, u, f, colour, affine);
+    } else {
+      detail::smoothViscousComponent<3, 2>(space, op, u, f, colour, affine);
+    }
+  } else if (c == 0) {
+    detail::smoothViscousComponent<2, 0>(space, op, u, f, colour, affine);
+  } else {
+    detail::smoothViscousComponent<2, 1>(space, op, u, f, colour, affine);
+  }
+}
+
+/// \brief Edge viscosities from cell viscosities: the mean of the four cells around each edge
+/// (cells beyond a non-periodic boundary mirror the inside ones; periodic axes wrap). Every edge,
+/// boundary edges included, is written.
+template <class ExecutionSpace, class MemorySpace>
+void edgeViscosities(ExecutionSpace const& space, Grid const& grid, bool const (&periodic)[3],
+                     Field<MemorySpace> const& mu, Field<MemorySpace> const (&muEdge)[3]) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::cfd::edgeViscosities: fields not accessible");
+  const int off[3] = {grid.ghost, grid.ghost, grid.ghostZ()};
+  const int n[3] = {grid.nx, grid.ny, grid.nz};
+  const bool per[3] = {periodic[0], periodic[1], periodic[2]};
+  const int numSlots = grid.is3D() ? 3 : 1;
+  for (int slot = 0; slot < numSlots; ++slot) {
+    const int a = slot == 2 ? 1 : 0;
+    const int b = slot == 0 ? 1 : 2;
+    const auto out = muEdge[slot];
+    const int hi[3] = {n[0] + (a == 0 || b == 0), n[1] + (a == 1 || b == 1),
+                       n[2] + (a == 2 || b == 2)};
+    Kokkos::parallel_for(
+        "hikiln::cfd::edgeViscosities", gridPolicy(space, {0, 0, 0}, hi),
+        KOKKOS_LAMBDA(const int i, const int j, const int k) {
+          const auto cellIndex = [&](int axis, int node, int side) {
+            int cell = node - 1 + side;
+            if (per[axis]) {
+              cell = cell < 0 ? cell + n[axis] : (cell >= n[axis] ? cell - n[axis] : cell);
+            } else {
+              cell = cell < 0 ? 0 : (cell >= n[axis] ? n[axis] - 1 : cell);
+            }
+            return cell;
+          };
+          int idx[3] = {i, j, k};
+          double sum = 0.0;
+          for (int sa = 0; sa < 2; ++sa) {
+            for (int sb = 0; sb < 2; ++sb) {
+              int cell[3] = {i, j, k};
+              cell[a] = cellIndex(a, idx[a], sa);
+              cell[b] = cellIndex(b, idx[b], sb);
+              sum += mu(cell[0] + off[0], cell[1] + off[1], cell[2] + off[2]);
+            }
+          }
+          out(i + off[0], j + off[1], k + off[2]) = 0.25 * sum;
+        });
+  }
+}
+
+} // namespace hikiln::cfd

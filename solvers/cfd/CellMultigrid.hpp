@@ -1,0 +1,319 @@
+#pragma once
+/// \file CellMultigrid.hpp
+/// \brief Matrix-free geometric multigrid for A x = alpha x - div(beta grad x) = f on a cell grid
+/// (pressure Poisson with beta = 1/rho and alpha = 0; implicit scalar diffusion), usable alone
+/// (V-cycle iteration) and as the preconditioner of conjugate gradients (one V-cycle per step).
+///
+/// Design
+/// - Levels from coarsenGrids (factor 2 per axis where possible, semi-coarsening for flat
+///   domains); coefficients coarsened by averages: alpha over the 2^d children, beta over the
+///   fine faces that make up a coarse face (the coarse operator is rediscretised, not Galerkin).
+/// - V(pre, post)-cycle: red-black Gauss-Seidel (red then black before, black then red after),
+///   residual, restriction by the mean of the children, piecewise-constant interpolation of the
+///   correction (options: linear, P^T restriction; see Transfer.hpp for the measured reasons),
+///   and a dense pseudo-inverse on the coarsest level. With the defaults R = P^T / 2^d and the
+///   V-cycle is a symmetric operator.
+/// - Boundaries through AxisClosure: wall = zero normal gradient, Value = Dirichlet (its value
+///   enters only on the finest level of a solve, "affine"), periodic.
+/// - Null space: with alpha absent and no Dirichlet side the operator is singular (constants):
+///   the right-hand side is projected to zero mean (the nearest consistent problem) and the
+///   solution is returned with zero mean.
+/// - Determinism: no atomics; red-black updates of one colour read only the other colour, so
+///   fixed-count V-cycles are bitwise identical for any thread count. Residual norms and (in
+///   the singular case) means are parallel reductions whose rounding depends on the backend.
+
+#include "kernels/cfd/AxisClosure.hpp"
+#include "kernels/cfd/CellOperator.hpp"
+#include "kernels/cfd/FieldOps.hpp"
+#include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/Transfer.hpp"
+#include "solvers/cfd/Coarsening.hpp"
+#include "solvers/cfd/DenseCoarseSolver.hpp"
+#include "solvers/cfd/SolveStats.hpp"
+
+#include <Kokkos_Core.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace hikiln::cfd {
+
+/// \brief Geometric multigrid for the cell-centred operator (see the file comment).
+template <class ExecutionSpace> class CellMultigrid {
+public:
+  using execution_space = ExecutionSpace;
+  using memory_space = typename ExecutionSpace::memory_space;
+  using field_type = Field<memory_space>;
+  using operator_type = CellOperator<memory_space>;
+
+  /// \brief Builds the hierarchy for the operator with cell coefficient alpha (an empty View
+  /// for alpha = 0) and face coefficients beta (FaceX, FaceY, FaceZ; beta[2] unused in 2D) on
+  /// grid with boundary conditions bc. The fields are referenced, not copied: change them and
+  /// build a new solver. Throws if the coarsest level is too large for the direct solve.
+  CellMultigrid(ExecutionSpace const& space, Grid const& grid, ScalarBoundaries const& bc,
+                field_type const& alpha, field_type const (&beta)[3],
+                MultigridOptions const& options = MultigridOptions())
+      : _space(space), _bc(bc), _options(options) {
+    checkBoundaries(grid, bc);
+    setupLevels(grid, alpha, beta);
+    setupCoarseSolve();
+  }
+
+  /// \brief Solves A x = f by V-cycles from the initial guess x (boundary values included);
+  /// stops at ||f - A x|| <= tolerance * ||f - A x_0|| or after maxIterations cycles.
+  SolveStats solve(field_type const& x, field_type const& f) {
+    const field_type rhs = consistentRhs(f);
+    Level& fine = _levels.front();
+    SolveStats stats;
+    stats.initialResidual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, fine.res, true));
+    stats.history.push_back(stats.initialResidual);
+    double residual = stats.initialResidual;
+    while (residual > _options.tolerance * stats.initialResidual &&
+           stats.iterations < _options.maxIterations) {
+      cycle(0, x, rhs, true);
+      residual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, fine.res, true));
+      stats.history.push_back(residual);
+      ++stats.iterations;
+    }
+    if (_singular) {
+      removeMean(_space, fine.box, x);
+    }
+    stats.finalResidual = residual;
+    stats.converged = residual <= _options.tolerance * stats.initialResidual;
+    return stats;
+  }
+
+  /// \brief Solves A x = f by conjugate gradients preconditioned with one V-cycle per
+  /// iteration (flexible Polak-Ribiere update, as the default V-cycle is not exactly
+  /// symmetric), from the initial guess x; same stopping rule as solve().
+  SolveStats solvePcg(field_type const& x, field_type const& f) {
+    allocateKrylov();
+    const field_type rhs = consistentRhs(f);
+    Level& fine = _levels.front();
+    const UnknownBox& box = fine.box;
+    SolveStats stats;
+    stats.initialResidual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, _r, true));
+    stats.history.push_back(stats.initialResidual);
+    double residual = stats.initialResidual;
+    if (residual > 0.0) {
+      precondition(_r, _z);
+      axpbyUnknowns(_space, box, 1.0, _z, 0.0, _p);
+      double rz = dotUnknowns(_space, box, _r, _z);
+      while (residual > _options.tolerance * stats.initialResidual &&
+             stats.iterations < _options.maxIterations) {
+        applyCellOperator(_space, fine.op, _p, _q, false);
+        const double step = rz / dotUnknowns(_space, box, _p, _q);
+        axpbyUnknowns(_space, box, step, _p, 1.0, x);
+        axpbyUnknowns(_space, box, -step, _q, 1.0, _r);
+        residual = std::sqrt(dotUnknowns(_space, box, _r, _r));
+        stats.history.push_back(residual);
+        ++stats.iterations;
+        if (residual <= _options.tolerance * stats.initialResidual) {
+          break;
+        }
+        // flexible (Polak-Ribiere) beta: robust when the V-cycle is not exactly symmetric
+        const double rzOld = dotUnknowns(_space, box, _r, _z);
+        precondition(_r, _z);
+        const double rzNew = dotUnknowns(_space, box, _r, _z);
+        axpbyUnknowns(_space, box, 1.0, _z, (rzNew - rzOld) / rz, _p);
+        rz = rzNew;
+      }
+    }
+    if (_singular) {
+      removeMean(_space, box, x);
+    }
+    stats.converged = residual <= _options.tolerance * stats.initialResidual;
+    stats.finalResidual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, _q, true));
+    return stats;
+  }
+
+  /// \brief One V-cycle on A x = f (affine: boundary values included, as in a solve).
+  void vcycle(field_type const& x, field_type const& f, bool affine) { cycle(0, x, f, affine); }
+
+  /// \brief z = M^-1 r: one V-cycle from zero on the linear operator (zero mean if singular).
+  void precondition(field_type const& r, field_type const& z) {
+    Kokkos::deep_copy(_space, z, 0.0);
+    cycle(0, z, r, false);
+    if (_singular) {
+      removeMean(_space, _levels.front().box, z);
+    }
+  }
+
+  /// \brief ||f - A x|| over the cells (affine), using an internal buffer.
+  double residualNorm(field_type const& x, field_type const& f) {
+    Level& fine = _levels.front();
+    return std::sqrt(cellResidualNorm2(_space, fine.op, x, f, fine.res, true));
+  }
+
+  /// \brief Number of levels (1 when the finest grid is solved directly).
+  int numLevels() const { return static_cast<int>(_levels.size()); }
+  /// \brief Operator (grid, closures, coefficients) of a level, 0 = finest.
+  operator_type const& levelOperator(int level) const { return _levels.at(level).op; }
+  /// \brief Unknowns of the dense coarsest-level solve.
+  int coarseUnknowns() const { return _coarse.size(); }
+  /// \brief True when the operator has a constant null space (no alpha, no Dirichlet side).
+  bool singular() const { return _singular; }
+  /// \brief The execution space instance the solver runs on.
+  ExecutionSpace const& space() const { return _space; }
+
+private:
+  struct Level {
+    operator_type op;
+    UnknownBox box;
+    field_type x, rhs, res;
+    Transfer fromFiner; ///< transfer between the next finer level and this one
+  };
+
+  void setupLevels(Grid const& grid, field_type const& alpha, field_type const (&beta)[3]) {
+    const bool periodic[3] = {_bc.periodic(0), _bc.periodic(1), _bc.periodic(2)};
+    const std::vector<LevelGeometry> geometry = coarsenGrids(grid, periodic, _options.coarsening);
+    const bool hasAlpha = alpha.extent(0) > 0;
+    _singular = !hasAlpha;
+    for (int side = 0; side < 6; ++side) {
+      _singular = _singular && _bc.kind[side] != BoundaryKind::Value;
+    }
+    const int numAxes = grid.is3D() ? 3 : 2;
+    for (std::size_t l = 0; l < geometry.size(); ++l) {
+      Level level;
+      Grid const& g = geometry[l].grid;
+      level.op.grid = g;
+      scalarClosures(g, _bc, level.op.axis);
+      level.box = unknownBox(g, level.op.axis);
+      level.res = makeField(_space, g, Staggering::Cell, "hikiln::cfd::mg::res");
+      if (l == 0) {
+        level.op.alpha = alpha;
+        for (int a = 0; a < 3; ++a) {
+          level.op.beta[a] = beta[a];
+        }
+        _levels.push_back(level);
+        continue;
+      }
+      level.x = makeField(_space, g, Staggering::Cell, "hikiln::cfd::mg::x");
+      level.rhs = makeField(_space, g, Staggering::Cell, "hikiln::cfd::mg::rhs");
+      Level const& finer = _levels.back();
+      level.fromFiner = makeTransfer(finer.op, level.op, geometry[l].ratio, _options);
+      if (hasAlpha) {
+        level.op.alpha = makeField(_space, g, Staggering::Cell, "hikiln::cfd::mg::alpha");
+        averageDown(_space, level.fromFiner, NodeAverage::Inject, finer.op.alpha, level.op.alpha);
+      }
+      for (int a = 0; a < numAxes; ++a) {
+        level.op.beta[a] = makeField(_space, g, faceStaggering(a), "hikiln::cfd::mg::beta");
+        Transfer faces = level.fromFiner;
+        faces.axis[a].fine.node = true;
+        faces.axis[a].coarse.node = true;
+        averageDown(_space, faces, NodeAverage::Inject, finer.op.beta[a], level.op.beta[a]);
+      }
+      _levels.push_back(level);
+    }
+  }
+
+  static Transfer makeTransfer(operator_type const& fine, operator_type const& coarse,
+                               int const (&ratio)[3], MultigridOptions const& options) {
+    Transfer t;
+    for (int a = 0; a < 3; ++a) {
+      t.axis[a].fine = fine.axis[a];
+      t.axis[a].coarse = coarse.axis[a];
+      t.axis[a].ratio = ratio[a];
+      t.axis[a].linear = options.interpolation == Interpolation::Linear;
+      t.axis[a].transpose = options.restriction == Restriction::Transpose;
+    }
+    t.fineOffsets = ghostOffsets(fine.grid);
+    t.coarseOffsets = ghostOffsets(coarse.grid);
+    return t;
+  }
+
+  void setupCoarseSolve() {
+    Level& last = _levels.back();
+    const std::int64_t n = last.box.size();
+    if (n > _options.maxDirectUnknowns) {
+      throw std::runtime_error(
+          "hikiln::cfd::CellMultigrid: the coarsest level has " + std::to_string(n) +
+          " cells, more than maxDirectUnknowns = " + std::to_string(_options.maxDirectUnknowns) +
+          "; use cell counts with more factors of 2 (periodic axes: even counts)");
+    }
+    if (_levels.size() == 1) {
+      last.x = makeField(_space, last.op.grid, Staggering::Cell, "hikiln::cfd::mg::x");
+    }
+    field_type probeIn = last.x;
+    field_type probeOut = last.res;
+    const operator_type op = last.op;
+    const UnknownBox box = last.box;
+    ExecutionSpace const space = _space;
+    _coarse.build(
+        _space, static_cast<int>(n),
+        [&](auto const& unit, auto const& column) {
+          unpackUnknowns(space, box, unit, 0, probeIn);
+          applyCellOperator(space, op, probeIn, probeOut, false);
+          packUnknowns(space, box, probeOut, column, 0);
+        },
+        _options.pseudoInverseTolerance);
+    Kokkos::deep_copy(_space, last.x, 0.0);
+  }
+
+  void cycle(int l, field_type const& x, field_type const& f, bool affine) {
+    Level& level = _levels[l];
+    if (l + 1 == static_cast<int>(_levels.size())) {
+      coarseSolve(level, x, f, affine);
+      return;
+    }
+    for (int s = 0; s < _options.preSmooth; ++s) {
+      smoothCellColour(_space, level.op, x, f, 0, affine);
+      smoothCellColour(_space, level.op, x, f, 1, affine);
+    }
+    cellResidual(_space, level.op, x, f, level.res, affine);
+    Level& coarse = _levels[l + 1];
+    restrictField(_space, coarse.fromFiner, level.res, coarse.rhs);
+    Kokkos::deep_copy(_space, coarse.x, 0.0);
+    cycle(l + 1, coarse.x, coarse.rhs, false);
+    prolongateAdd(_space, coarse.fromFiner, coarse.x, x);
+    for (int s = 0; s < _options.postSmooth; ++s) {
+      smoothCellColour(_space, level.op, x, f, 1, affine);
+      smoothCellColour(_space, level.op, x, f, 0, affine);
+    }
+  }
+
+  void coarseSolve(Level& level, field_type const& x, field_type const& f, bool affine) {
+    cellResidual(_space, level.op, x, f, level.res, affine);
+    packUnknowns(_space, level.box, level.res, _coarse.rhs, 0);
+    _coarse.apply(_space);
+    unpackUnknowns(_space, level.box, _coarse.solution, 0, level.res);
+    axpbyUnknowns(_space, level.box, 1.0, level.res, 1.0, x);
+  }
+
+  field_type consistentRhs(field_type const& f) {
+    if (!_singular) {
+      return f;
+    }
+    Level& fine = _levels.front();
+    if (_rhs0.extent(0) == 0) {
+      _rhs0 = makeField(_space, fine.op.grid, Staggering::Cell, "hikiln::cfd::mg::rhs0");
+    }
+    Kokkos::deep_copy(_space, _rhs0, f);
+    removeMean(_space, fine.box, _rhs0);
+    return _rhs0;
+  }
+
+  void allocateKrylov() {
+    if (_r.extent(0) > 0) {
+      return;
+    }
+    Grid const& g = _levels.front().op.grid;
+    _r = makeField(_space, g, Staggering::Cell, "hikiln::cfd::pcg::r");
+    _z = makeField(_space, g, Staggering::Cell, "hikiln::cfd::pcg::z");
+    _p = makeField(_space, g, Staggering::Cell, "hikiln::cfd::pcg::p");
+    _q = makeField(_space, g, Staggering::Cell, "hikiln::cfd::pcg::q");
+  }
+
+  ExecutionSpace _space;
+  ScalarBoundaries _bc;
+  MultigridOptions _options;
+  std::vector<Level> _levels;
+  DenseCoarseSolver<ExecutionSpace> _coarse;
+  bool _singular = false;
+  field_type _rhs0, _r, _z, _p, _q;
+};
+
+} // namespace hikiln::cfd
