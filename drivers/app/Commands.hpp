@@ -27,6 +27,9 @@ void addDemCommand(CLI::App& app, Action& action);
 /// \brief `hikiln sweep STUDY -o DIR`: a resumable DEM parameter study.
 void addSweepCommand(CLI::App& app, Action& action);
 
+/// \brief `hikiln continuum CASE -o DIR`: the 2D two-phase continuum model of a drum.
+void addContinuumCommand(CLI::App& app, Action& action);
+
 /// \brief `hikiln schema STAGE`: the case-file reference of a stage.
 void addSchemaCommand(CLI::App& app, Action& action);
 

@@ -1,6 +1,7 @@
 // `hikiln schema STAGE`: the case-file reference of a stage (Markdown), generated from its schema
 // so the documentation can never drift from what the program accepts.
 #include "drivers/app/Commands.hpp"
+#include "drivers/cfd/ContinuumCase.hpp"
 #include "drivers/dem/DemCase.hpp"
 
 #include <iostream>
@@ -11,10 +12,11 @@ namespace hikiln::app {
 void addSchemaCommand(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("schema", "Print the case-file reference of a stage (Markdown)");
   auto stage = std::make_shared<std::string>();
-  cmd->add_option("stage", *stage, "Stage")->required()->check(CLI::IsMember({"dem"}));
+  cmd->add_option("stage", *stage, "Stage")->required()->check(CLI::IsMember({"dem", "continuum"}));
   cmd->callback([&action, stage] {
     action = [stage] {
-      std::cout << dem::demSchema().markdownReference();
+      std::cout << (*stage == "continuum" ? cfd::continuumSchema() : dem::demSchema())
+                       .markdownReference();
       return 0;
     };
   });

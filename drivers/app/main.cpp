@@ -34,6 +34,7 @@ int main(int argc, char* argv[]) {
   hikiln::app::addDemCommand(app, action);
   hikiln::app::addSweepCommand(app, action);
   hikiln::app::addCalibrateCommand(app, action);
+  hikiln::app::addContinuumCommand(app, action);
   hikiln::app::addSchemaCommand(app, action);
 
   CLI11_PARSE(app, argc, argv);

@@ -13,52 +13,65 @@ namespace hikiln::calibrate {
 
 namespace fs = std::filesystem;
 
-namespace {
-// Single-quoted for /bin/sh: safe for any path.
 std::string shellQuote(const std::string& text) {
   std::string quoted = "'";
   for (char ch : text)
     quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
   return quoted + "'";
 }
-} // namespace
 
-std::string calibrationPlotScript() {
+std::string plotScriptPath(const std::string& name) {
   const char* overridden = std::getenv("HIKILN_PLOT_SCRIPTS");
   const fs::path dir = overridden != nullptr && *overridden != '\0'
                            ? fs::path(overridden)
                            : fs::path(HIKILN_SOURCE_DIR) / "drivers" / "plots";
-  return (dir / "plot_calibration.py").string();
+  return (dir / name).string();
 }
 
-std::string calibrationPlotCommand(const std::string& outputDir, const std::string& plotDir) {
-  const fs::path out(outputDir);
-  return std::string(plotPython) + " " + shellQuote(calibrationPlotScript()) + " --csv " +
-         shellQuote((out / "calibration.csv").string()) + " --json " +
-         shellQuote((out / "calibration.json").string()) + " --out " + shellQuote(plotDir);
+std::string calibrationPlotScript() {
+  return plotScriptPath("plot_calibration.py");
 }
 
-bool drawCalibrationPlots(const std::string& outputDir, const std::string& plotDir) {
-  const std::string command = calibrationPlotCommand(outputDir, plotDir);
-  if (!fs::is_regular_file(calibrationPlotScript())) {
-    spdlog::warn("plot script '{}' not found (set HIKILN_PLOT_SCRIPTS); no plots. Later: {}",
-                 calibrationPlotScript(), command);
+bool runPlotScript(const std::string& script, const std::string& arguments,
+                   const std::string& modules, const std::string& what) {
+  const std::string command = std::string(plotPython) + " " + shellQuote(script) + " " + arguments;
+  if (!fs::is_regular_file(script)) {
+    spdlog::warn("plot script '{}' not found (set HIKILN_PLOT_SCRIPTS); no {}. Later: {}", script,
+                 what, command);
     return false;
   }
   const std::string probe =
-      std::string(plotPython) + " -c 'import matplotlib, numpy' >/dev/null 2>&1";
+      std::string(plotPython) + " -c 'import " + modules + "' >/dev/null 2>&1";
   if (std::system(probe.c_str()) != 0) {
-    spdlog::warn("{} cannot import matplotlib and numpy (apt-get install python3-matplotlib); "
-                 "no plots. Run later: {}",
-                 plotPython, command);
+    spdlog::warn("{} cannot import {} (apt-get install python3-matplotlib python3-h5py); no {}. "
+                 "Later: {}",
+                 plotPython, modules, what, command);
     return false;
   }
-  spdlog::info("plotting: {}", command);
-  if (std::system(command.c_str()) != 0) {
-    spdlog::warn("the plot script failed; rerun: {}", command);
+  spdlog::info("{}: {}", what, command);
+  if (std::system((command + " >/dev/null").c_str()) != 0) {
+    spdlog::warn("the {} script failed; rerun: {}", what, command);
     return false;
   }
   return true;
+}
+
+namespace {
+std::string calibrationPlotArguments(const std::string& outputDir, const std::string& plotDir) {
+  const fs::path out(outputDir);
+  return "--csv " + shellQuote((out / "calibration.csv").string()) + " --json " +
+         shellQuote((out / "calibration.json").string()) + " --out " + shellQuote(plotDir);
+}
+} // namespace
+
+std::string calibrationPlotCommand(const std::string& outputDir, const std::string& plotDir) {
+  return std::string(plotPython) + " " + shellQuote(calibrationPlotScript()) + " " +
+         calibrationPlotArguments(outputDir, plotDir);
+}
+
+bool drawCalibrationPlots(const std::string& outputDir, const std::string& plotDir) {
+  return runPlotScript(calibrationPlotScript(), calibrationPlotArguments(outputDir, plotDir),
+                       "matplotlib, numpy", "calibration plots");
 }
 
 } // namespace hikiln::calibrate

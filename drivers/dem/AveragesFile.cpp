@@ -50,6 +50,8 @@ void writeCellFields(io::H5File& file, const std::string& group, const CellField
   for (const FieldEntry& e : cellFieldTable())
     file.writeDataset(group + "/" + e.name, f.*(e.values), shape, e.units);
   file.writeDataset(group + "/valid", f.valid, shape, "1");
+  if (!f.temperature.empty())
+    file.writeDataset(group + "/temperature", f.temperature, shape, "K");
 }
 
 void writePolar(io::H5File& file, const AveragedFields& a) {
@@ -117,6 +119,8 @@ void writeXdmf(const std::string& xmfPath, const std::string& h5Path, const Aver
     step.attributes.push_back({e.name, e.name});
   step.attributes.push_back({"velocity", "velocity", 2});
   step.attributes.push_back({"valid", "valid", 1, io::XdmfNumber::UInt8});
+  if (!a.cartesian.temperature.empty())
+    step.attributes.push_back({"temperature", "temperature"});
   io::writeXdmfGrids(xmfPath, {step});
 }
 

@@ -20,6 +20,19 @@ cases::CaseSchema buildSchema() {
       .range(0, 1, Bounds::Open)
       .defaultsTo("0.20")
       .doc("Bed area (including voids) over drum cross-section area");
+  s.choice("walls.roughness", {"none", "glued"})
+      .defaultsTo("none")
+      .doc("Shell: smooth analytic cylinder, or a ring of discs glued to it (turning with it)");
+  s.real("walls.bump_diameter")
+      .unit("ratio")
+      .range(0.25, 4)
+      .defaultsTo("1.0")
+      .doc("Glued disc diameter over particles.diameter (roughness: glued)");
+  s.real("walls.bump_spacing")
+      .unit("ratio")
+      .range(1, 4)
+      .defaultsTo("1.0")
+      .doc("Centre distance of the glued discs over their diameter (1: touching)");
   s.real("particles.diameter").unit("m").positive().defaultsTo("0.02").doc("Mean disc diameter");
   s.real("particles.size_range")
       .unit("fraction")
@@ -136,6 +149,7 @@ cases::CaseSchema buildSchema() {
       .defaultsTo("12")
       .doc("Neighbour slots per particle (an overflow stops the run with an error)");
   s.real("gravity").unit("m/s^2").nonNegative().defaultsTo("9.81").doc("Gravity, along -y");
+  addHeatKeys(s);
   s.require("spin_up < duration", [](const cases::CaseFile& c) {
     return c.real("time.spin_up") < c.real("time.duration");
   });
@@ -187,6 +201,10 @@ DrumRunSettings drumSettingsFromCase(const cases::CaseFile& c) {
                                                                       : MassConvention::Sphere;
   s.fill.thickness = c.real("particles.thickness");
   s.fill.seed = static_cast<std::uint64_t>(c.integer("particles.seed"));
+  if (c.string("walls.roughness") == "glued") {
+    s.fill.shellBumpDiameter = c.real("walls.bump_diameter") * s.fill.meanDiameter;
+    s.fill.shellBumpSpacing = c.real("walls.bump_spacing");
+  }
   s.config.particleContact = contactFromCase(c, false);
   s.config.wallContact = contactFromCase(c, true);
   s.config.timeStep = c.real("time.step");
@@ -206,6 +224,7 @@ DrumRunSettings drumSettingsFromCase(const cases::CaseFile& c) {
   s.snapshotInterval = c.real("output.snapshot_interval");
   s.checkpointInterval = c.real("output.checkpoint_interval");
   s.averageInterval = c.real("output.average_interval");
+  s.heat = heatSettingsFromCase(c, s.fill);
   return s;
 }
 

@@ -4,6 +4,7 @@
 
 #include "drivers/case/CaseFile.hpp"
 #include "drivers/case/CaseSchema.hpp"
+#include "drivers/dem/HeatCase.hpp"
 #include "solvers/dem/DemSystem.hpp"
 #include "solvers/dem/DrumFill.hpp"
 
@@ -21,6 +22,7 @@ struct DrumRunSettings {
   double snapshotInterval = 1.0;    ///< s between particle snapshots
   double checkpointInterval = 10.0; ///< s between checkpoints
   double averageInterval = 10.0;    ///< s between writes of the cumulative averages
+  DrumHeatSettings heat;            ///< particle heat transfer (heat.*)
   /// \brief Drum angular velocity (rad/s, counter-clockwise).
   double omega() const { return rpm * 2.0 * constants::pi / 60.0; }
 };

@@ -7,10 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace hikiln::dem {
 
@@ -29,19 +29,13 @@ double relativeChange(double now, double before) {
 double meanDiameterOf(const ParticleArrays<Kokkos::HostSpace>& bed) {
   std::vector<double> d;
   for (std::size_t i = 0; i < bed.count(); ++i)
-    d.push_back(2.0 * bed.radius(i));
+    if (isFree(bed.kind(i))) // a rough shell's glued discs are not bed
+      d.push_back(2.0 * bed.radius(i));
   std::sort(d.begin(), d.end());
   double sum = 0.0;
   for (double v : d)
     sum += v;
   return d.empty() ? 0.0 : sum / static_cast<double>(d.size());
-}
-
-std::string shellQuote(const std::string& text) {
-  std::string quoted = "'";
-  for (char ch : text)
-    quoted += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return quoted + "'";
 }
 
 } // namespace
@@ -83,6 +77,10 @@ void DrumAverages::resume(const io::Checkpoint& cp, const ParticleArrays<Kokkos:
   sums.firstTime = cp.scalars.at("averages_first_time");
   sums.lastTime = cp.scalars.at("averages_last_time");
   _averager->restore(sums);
+  if (cp.reals.count("averages_temperature_polar") != 0) {
+    _temperaturePolar = cp.reals.at("averages_temperature_polar");
+    _temperatureCartesian = cp.reals.at("averages_temperature_cartesian");
+  }
   const std::vector<double>& h = cp.reals.at("averages_history");
   _history.clear();
   for (std::size_t r = 0; r + historyColumns <= h.size(); r += historyColumns) {
@@ -106,6 +104,25 @@ void DrumAverages::sample(const DemSystem<Space>& system, double time) {
   _averager->sample(system, time);
 }
 
+void DrumAverages::sampleTemperature(const ParticleArrays<Kokkos::HostSpace>& particles,
+                                     const std::vector<double>& temperature) {
+  if (!_averager)
+    throw std::logic_error("hikiln::dem::DrumAverages: sample before start()/resume()");
+  const cg::PolarGrid polar = _averager->settings().polarGrid();
+  const cg::CartesianGrid cartesian = _averager->settings().cartesianGrid();
+  _temperaturePolar.resize(2 * static_cast<std::size_t>(polar.cellCount()), 0.0);
+  _temperatureCartesian.resize(2 * static_cast<std::size_t>(cartesian.cellCount()), 0.0);
+  for (std::size_t i = 0; i < particles.count(); ++i) {
+    const double x = particles.position(i, 0), y = particles.position(i, 1);
+    const double m = particles.mass(i);
+    for (auto [sums, cell] : {std::pair{&_temperaturePolar, polar.cellOf(x, y)},
+                              std::pair{&_temperatureCartesian, cartesian.cellOf(x, y)}}) {
+      (*sums)[2 * cell] += m;
+      (*sums)[2 * cell + 1] += m * temperature.at(i);
+    }
+  }
+}
+
 void DrumAverages::write(double time) {
   if (!_averager || _averager->samples() == 0)
     return;
@@ -113,6 +130,11 @@ void DrumAverages::write(double time) {
     return; // nothing new since the last write (the end of the run fell on an interval)
   _last = _averager->result();
   _written = true;
+  for (auto [sums, fields] : {std::pair{&_temperaturePolar, &_last.polar},
+                              std::pair{&_temperatureCartesian, &_last.cartesian}}) {
+    for (std::size_t c = 0; 2 * c < sums->size(); ++c)
+      fields->temperature.push_back((*sums)[2 * c] > 0 ? (*sums)[2 * c + 1] / (*sums)[2 * c] : nan);
+  }
   const AveragesConditions conditions{_run.omega(), _meanDiameter, _run.fill.density, _fill};
   writeAveragesFile(_directory, _last, conditions, _info);
   const BedAverage bed = bedAverage(_last.cartesian);
@@ -158,6 +180,10 @@ void DrumAverages::save(io::Checkpoint& cp) const {
       h.push_back(v);
   }
   cp.reals["averages_history"] = h;
+  if (!_temperaturePolar.empty()) {
+    cp.reals["averages_temperature_polar"] = _temperaturePolar;
+    cp.reals["averages_temperature_cartesian"] = _temperatureCartesian;
+  }
 }
 
 nlohmann::json DrumAverages::summary() const {
@@ -197,30 +223,11 @@ nlohmann::json DrumAverages::summary() const {
 bool DrumAverages::plot() const {
   if (!_written)
     return false;
-  const fs::path script =
-      fs::path(calibrate::calibrationPlotScript()).parent_path() / "plot_fields.py";
   const fs::path dir(_directory);
-  const std::string command =
-      std::string(calibrate::plotPython) + " " + shellQuote(script.string()) + " --h5 " +
-      shellQuote((dir / "averages.h5").string()) + " --out " + shellQuote((dir / "plots").string());
-  if (!fs::is_regular_file(script)) {
-    spdlog::warn("plot script '{}' not found (set HIKILN_PLOT_SCRIPTS); no field maps. Later: {}",
-                 script.string(), command);
-    return false;
-  }
-  const std::string probe =
-      std::string(calibrate::plotPython) + " -c 'import matplotlib, numpy, h5py' >/dev/null 2>&1";
-  if (std::system(probe.c_str()) != 0) {
-    spdlog::warn("{} cannot import matplotlib, numpy and h5py; no field maps. Later: {}",
-                 calibrate::plotPython, command);
-    return false;
-  }
-  spdlog::info("field maps: {}", command);
-  if (std::system((command + " >/dev/null").c_str()) != 0) {
-    spdlog::warn("the field-map script failed; rerun: {}", command);
-    return false;
-  }
-  return true;
+  return calibrate::runPlotScript(calibrate::plotScriptPath("plot_fields.py"),
+                                  "--h5 " + calibrate::shellQuote((dir / "averages.h5").string()) +
+                                      " --out " + calibrate::shellQuote((dir / "plots").string()),
+                                  "matplotlib, numpy, h5py", "field maps");
 }
 
 } // namespace hikiln::dem

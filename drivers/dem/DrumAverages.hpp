@@ -44,6 +44,10 @@ public:
 
   /// \brief Adds the current state as one sample at rotation time `time`.
   void sample(const DemSystem<Space>& system, double time);
+  /// \brief Adds the particles' temperatures (K, in the order of `particles`) to the
+  /// mass-weighted cell temperatures (with each sample() of a heated run).
+  void sampleTemperature(const ParticleArrays<Kokkos::HostSpace>& particles,
+                         const std::vector<double>& temperature);
   /// \brief Writes averages.h5 / averages.xmf with everything so far and logs the convergence
   /// (nothing without samples).
   void write(double time);
@@ -64,6 +68,9 @@ private:
   std::unique_ptr<FieldAverager<Space>> _averager;
   std::vector<AveragesConvergence> _history;
   AveragedFields _last; ///< fields of the last write
+  /// Cells x {sum m, sum m T} of the polar and the Cartesian grid (empty until a temperature
+  /// sample).
+  std::vector<double> _temperaturePolar, _temperatureCartesian;
   bool _written = false;
 };
 

@@ -4,6 +4,7 @@
 #include "drivers/dem/DemCase.hpp"
 #include "drivers/dem/DemCheckpoint.hpp"
 #include "drivers/dem/DrumAverages.hpp"
+#include "drivers/dem/DrumHeat.hpp"
 #include "drivers/dem/ParticleSnapshots.hpp"
 #include "drivers/dem/TimeSeries.hpp"
 #include "drivers/io/AtomicFile.hpp"
@@ -102,6 +103,7 @@ int runDrum(const DrumRunOptions& o) {
 
   DemSystem<Space> system(s.config);
   DrumAverages averages(s, out.string(), info);
+  DrumHeat heat(s.heat, out.string());
   Running slip, angle;
   std::int64_t rotationStartStep = 0;
   double rotationStartTime = 0, fillMeasured = 0, bulkFraction = 0, settleWall = 0;
@@ -130,6 +132,7 @@ int runDrum(const DrumRunOptions& o) {
     fillMeasured = cp.scalars.at("fill_measured");
     bulkFraction = cp.scalars.at("bulk_fraction");
     averages.resume(cp, system.hostParticles(), fillMeasured);
+    heat.resume(cp, system);
     restartTime = cp.time;
     series.keepUntil(restartTime);
     spdlog::info("restarting from {} at t = {:.3f} s (step {})", checkpointPath, cp.time, cp.step);
@@ -161,9 +164,10 @@ int runDrum(const DrumRunOptions& o) {
     rotationStartStep = system.stepCount();
     rotationStartTime = system.time();
     system.setDrumAngularVelocity(s.omega());
+    heat.start(system, 0.0); // temperatures start with the rotation
   }
 
-  ParticleSnapshots snapshots(out.string(), info, restartTime);
+  ParticleSnapshots snapshots(out.string(), info, restartTime, heat.snapshotFieldNames());
   const double dt = system.timeStep();
   const auto everyN = [dt](double interval) {
     return std::max<std::int64_t>(1, std::llround(interval / dt));
@@ -174,8 +178,10 @@ int runDrum(const DrumRunOptions& o) {
   const std::int64_t checkpointEvery = everyN(s.checkpointInterval);
   const std::int64_t averageEvery = everyN(s.averageInterval);
   const std::int64_t spinUpSteps = std::llround(s.spinUp / dt);
-  if (!o.restart)
-    snapshots.write(system.stepCount(), system.time(), system.hostParticles());
+  if (!o.restart) {
+    const auto host = system.hostParticles();
+    snapshots.write(system.stepCount(), system.time(), host, heat.snapshotFields(host));
+  }
 
   const auto rotateStart = Clock::now();
   const std::int64_t firstStep = system.stepCount();
@@ -183,7 +189,7 @@ int runDrum(const DrumRunOptions& o) {
   std::int64_t k = system.stepCount() - rotationStartStep;
   while (k < totalSteps) {
     const std::int64_t n = std::min(sampleEvery - k % sampleEvery, totalSteps - k);
-    system.advance(n);
+    heat.advance(system, n); // the system's steps, with the heat steps due
     k += n;
     progress.update(static_cast<double>(k) * dt, system.stepCount());
     if (k % sampleEvery == 0) { // a fixed schedule, so a restart samples the same steps
@@ -194,10 +200,15 @@ int runDrum(const DrumRunOptions& o) {
       if (k >= spinUpSteps) {
         slip.add(sl), angle.add(an);
         averages.sample(system, static_cast<double>(k) * dt);
+        if (heat.enabled())
+          averages.sampleTemperature(host, heat.meanTemperatures(host));
       }
       series.add({system.time(), static_cast<double>(k) * dt, system.energy().kinetic(), sl, an});
-      if ((k - n) / snapshotEvery != k / snapshotEvery)
-        snapshots.write(system.stepCount(), system.time(), host);
+      heat.sample(system, static_cast<double>(k) * dt);
+      // the first sample on or past each interval, counted from the previous sample (not from
+      // k - n: a restart from a checkpoint between samples must pick the same samples)
+      if ((k - sampleEvery) / snapshotEvery != k / snapshotEvery)
+        snapshots.write(system.stepCount(), system.time(), host, heat.snapshotFields(host));
     }
     // cumulative averages.h5 at the first step on or past each interval (k moves in sample steps)
     if (k >= spinUpSteps && ((k - n) / averageEvery != k / averageEvery || k == totalSteps))
@@ -209,12 +220,14 @@ int runDrum(const DrumRunOptions& o) {
       slip.save(cp, "slip");
       angle.save(cp, "angle");
       averages.save(cp);
+      heat.save(cp);
       cp.scalars["rotation_start_step"] = static_cast<double>(rotationStartStep);
       cp.scalars["rotation_start_time"] = rotationStartTime;
       cp.scalars["fill_measured"] = fillMeasured;
       cp.scalars["bulk_fraction"] = bulkFraction;
       io::writeCheckpoint(checkpointPath, cp);
       series.flush();
+      heat.flush();
     }
   }
   progress.finish();
@@ -253,8 +266,10 @@ int runDrum(const DrumRunOptions& o) {
   summary["kinetic_energy_final_J"] = system.energy().kinetic();
   summary["snapshots"] = snapshots.size();
   summary["averages"] = averages.summary();
+  summary["heat"] = heat.summary();
   io::writeSummaryJson((out / "summary.json").string(), summary);
   averages.plot();
+  heat.plot(R);
   spdlog::info("dem: {} particles, {:.1f} s rotated in {:.1f} s wall ({:.3g} particle-steps/s); "
                "wall slip {:.1f} %, surface angle {:.1f} deg; outputs in {}",
                system.size(), s.duration, rotateWall, summary["particle_steps_per_s"].get<double>(),

@@ -18,7 +18,8 @@ std::vector<io::XdmfAttribute> snapshotAttributes() {
 }
 } // namespace
 
-ParticleSnapshots::ParticleSnapshots(std::string directory, io::RunInfo info, double keepUntil)
+ParticleSnapshots::ParticleSnapshots(std::string directory, io::RunInfo info, double keepUntil,
+                                     const std::vector<std::string>& extraFields)
     : _directory(std::move(directory)), _info(std::move(info)) {
   const fs::path dir = fs::path(_directory) / "snapshots";
   fs::create_directories(dir);
@@ -42,12 +43,17 @@ ParticleSnapshots::ParticleSnapshots(std::string directory, io::RunInfo info, do
     s.group = io::stepGroupName(step);
     s.count = static_cast<std::int64_t>(h5.datasetDims(s.group + "/position").at(0));
     s.attributes = snapshotAttributes();
+    for (const std::string& name : extraFields) {
+      if (h5.isDataset(s.group + "/" + name))
+        s.attributes.push_back({name, name, 1});
+    }
     _steps.push_back(s);
   }
 }
 
 void ParticleSnapshots::write(std::int64_t step, double time,
-                              const ParticleArrays<Kokkos::HostSpace>& p) {
+                              const ParticleArrays<Kokkos::HostSpace>& p,
+                              const std::vector<ParticleField>& extra) {
   const std::size_t n = p.count();
   const std::string path =
       (fs::path(_directory) / "snapshots" / fmt::format("particles_{:09d}.h5", step)).string();
@@ -72,6 +78,8 @@ void ParticleSnapshots::write(std::int64_t step, double time,
   h5.writeDataset(g + "/angular_velocity", omega, {n}, "rad/s");
   h5.writeDataset(g + "/radius", radius, {n}, "m");
   h5.writeDataset(g + "/id", id, {n}, "1");
+  for (const ParticleField& f : extra)
+    h5.writeDataset(g + "/" + f.name, f.values, {n}, f.unit);
   h5.commit();
 
   io::XdmfParticleStep s;
@@ -80,6 +88,8 @@ void ParticleSnapshots::write(std::int64_t step, double time,
   s.group = g;
   s.count = static_cast<std::int64_t>(n);
   s.attributes = snapshotAttributes();
+  for (const ParticleField& f : extra)
+    s.attributes.push_back({f.name, f.name, 1});
   _steps.push_back(s);
   io::writeXdmfParticles((fs::path(_directory) / "particles.xmf").string(), _steps);
 }

@@ -12,15 +12,27 @@
 
 namespace hikiln::dem {
 
+/// \brief An extra per-particle scalar of a snapshot (e.g. a temperature), one value per particle
+/// in the order of the particle arrays written with it.
+struct ParticleField {
+  std::string name; ///< dataset and ParaView name
+  std::string unit;
+  std::vector<double> values;
+};
+
 /// \brief Writes snapshots into DIR/snapshots/ and keeps DIR/particles.xmf listing them.
 class ParticleSnapshots {
 public:
   /// \brief Snapshots of a run in `directory`; existing snapshots later than `keepUntil` (a restart
-  /// time) are dropped from the series, earlier ones are kept.
-  ParticleSnapshots(std::string directory, io::RunInfo info, double keepUntil = -1.0);
+  /// time) are dropped from the series, earlier ones are kept (with those of `extraFields` they
+  /// hold).
+  ParticleSnapshots(std::string directory, io::RunInfo info, double keepUntil = -1.0,
+                    const std::vector<std::string>& extraFields = {});
 
-  /// \brief Writes one snapshot (position, velocity, angular velocity, radius, id) and the series.
-  void write(std::int64_t step, double time, const ParticleArrays<Kokkos::HostSpace>& particles);
+  /// \brief Writes one snapshot (position, velocity, angular velocity, radius, id and `extra`) and
+  /// the series.
+  void write(std::int64_t step, double time, const ParticleArrays<Kokkos::HostSpace>& particles,
+             const std::vector<ParticleField>& extra = {});
 
   /// \brief Number of snapshots in the series.
   std::size_t size() const { return _steps.size(); }

@@ -71,9 +71,13 @@ void depositCells(ExecutionSpace const& space, Grid const& grid,
   auto mass = p.mass;
   auto wallFn = walls.normalForce;
   auto wallFt = walls.tangentialForce;
+  auto kind = p.kind;
   Kokkos::parallel_for(
       "hikiln::dem::cg::depositCells", Kokkos::RangePolicy<ExecutionSpace>(space, 0, p.count()),
       KOKKOS_LAMBDA(int i) {
+        if (!isFree(kind(i))) { // fixed and shell discs are boundary, not bed
+          return;
+        }
         const int c = grid.cellOf(x(i, 0), x(i, 1));
         const double m = mass(i), r = radius(i), vx = v(i, 0), vy = v(i, 1);
         const Tensor2 w = particleVirial(i, x, radius, list, wallFn, wallFt, wallSet, periodic);

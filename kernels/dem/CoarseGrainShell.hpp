@@ -3,6 +3,10 @@
 /// \brief Deposits one sample of the drum-shell contacts into angular bins (WallSum columns):
 /// contact normal and shear force, contact count, and the tangential speed of the particles at
 /// the shell. Atomics as in CoarseGrainDeposit.hpp (sums agree to round-off across threads).
+/// A rough shell's glued discs (ParticleKind::Shell) are part of the shell: the force the bed
+/// exerts on each of them (its contact sum, p.force, from the last step) is deposited as a shell
+/// contact, and the particles "at the shell" are then the free ones within touchGap of the discs'
+/// inner reach (ShellBins::radius set to it by the caller).
 
 #include "kernels/common/Compat.hpp"
 #include "kernels/dem/CoarseGrainGrid.hpp"
@@ -15,7 +19,7 @@ namespace hikiln::dem::cg {
 
 /// \brief Angular bins of the shell and how a sample is read.
 struct ShellBins {
-  double radius = 1.0;     ///< drum radius R (m)
+  double radius = 1.0;     ///< drum radius R (m), or a rough shell's inner reach
   int ntheta = 60;         ///< bins over [0, 2 pi) counter-clockwise from +x
   double touchGap = 0.002; ///< "at the shell": centre farther than R - r - touchGap (m)
   double shearSign = 1.0;  ///< +1 when the shell turns counter-clockwise (or rests), else -1
@@ -47,14 +51,25 @@ void depositShell(ExecutionSpace const& space, ShellBins const& bins,
   auto radius = p.radius;
   auto wallFn = walls.normalForce;
   auto wallFt = walls.tangentialForce;
+  auto kind = p.kind;
+  auto force = p.force;
   Kokkos::parallel_for(
       "hikiln::dem::cg::depositShell", Kokkos::RangePolicy<ExecutionSpace>(space, 0, p.count()),
       KOKKOS_LAMBDA(int i) {
         const double xi = x(i, 0), yi = x(i, 1);
         const double rho = math::sqrt(xi * xi + yi * yi);
-        const double fn = wallFn(i, 0), ft = wallFt(i, 0);
+        const bool bed = isFree(kind(i));
+        double fn = wallFn(i, 0), ft = wallFt(i, 0);
+        if (kind(i) == static_cast<std::uint8_t>(ParticleKind::Shell) && rho > 0.0) {
+          // the bed pushes the disc with F: normal load F . n, shear on the bed -F . t
+          const double nx = xi / rho, ny = yi / rho;
+          fn = force(i, 0) * nx + force(i, 1) * ny;
+          ft = -(force(i, 0) * (-ny) + force(i, 1) * nx);
+        } else if (!bed) {
+          return;
+        }
         const bool contact = fn != 0.0 || ft != 0.0;
-        const bool near = rho > 0.0 && atShell(rho, radius(i), bins.radius, bins.touchGap);
+        const bool near = bed && rho > 0.0 && atShell(rho, radius(i), bins.radius, bins.touchGap);
         if (!contact && !near) {
           return;
         }

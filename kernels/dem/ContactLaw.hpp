@@ -223,6 +223,12 @@ KOKKOS_INLINE_FUNCTION double effectiveMass(double mi, double mj) {
   return mi * mj / (mi + mj);
 }
 
+/// \brief Effective mass of a pair where a non-free particle (fixed or shell-attached) has
+/// infinite mass: the free one's mass; effectiveMass() when both are free. Symmetric in i and j.
+KOKKOS_INLINE_FUNCTION double pairEffectiveMass(double mi, bool freeI, double mj, bool freeJ) {
+  return freeI ? (freeJ ? effectiveMass(mi, mj) : mi) : mj;
+}
+
 /// \brief Rolling radius of a pair, r_i r_j / (r_i + r_j).
 KOKKOS_INLINE_FUNCTION double rollingRadius(double ri, double rj) {
   return ri * rj / (ri + rj);

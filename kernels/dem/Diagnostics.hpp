@@ -1,6 +1,8 @@
 #pragma once
 /// \file Diagnostics.hpp
 /// \brief Energy and momentum sums over the particles (reductions; for monitoring, not per step).
+/// Only free particles count: fixed and shell-attached ones are parts of the boundary (their
+/// contacts with free particles count in the elastic energy, as wall contacts do).
 
 #include "kernels/common/Compat.hpp"
 #include "kernels/dem/ForceKernel.hpp"
@@ -46,19 +48,29 @@ EnergyReport computeEnergy(ExecutionSpace const& space, ParticleArrays<MemorySpa
   auto m = p.mass;
   auto inertia = p.inertia;
   auto radius = p.radius;
+  auto kind = p.kind;
   Kokkos::parallel_reduce(
       "hikiln::dem::energyTranslational", policy,
       KOKKOS_LAMBDA(int i, double& sum) {
-        sum += 0.5 * m(i) * (v(i, 0) * v(i, 0) + v(i, 1) * v(i, 1));
+        if (isFree(kind(i))) {
+          sum += 0.5 * m(i) * (v(i, 0) * v(i, 0) + v(i, 1) * v(i, 1));
+        }
       },
       e.translational);
   Kokkos::parallel_reduce(
       "hikiln::dem::energyRotational", policy,
-      KOKKOS_LAMBDA(int i, double& sum) { sum += 0.5 * inertia(i) * w(i) * w(i); }, e.rotational);
+      KOKKOS_LAMBDA(int i, double& sum) {
+        if (isFree(kind(i))) {
+          sum += 0.5 * inertia(i) * w(i) * w(i);
+        }
+      },
+      e.rotational);
   Kokkos::parallel_reduce(
       "hikiln::dem::energyGravitational", policy,
       KOKKOS_LAMBDA(int i, double& sum) {
-        sum -= m(i) * (s.gravityX * x(i, 0) + s.gravityY * x(i, 1));
+        if (isFree(kind(i))) {
+          sum -= m(i) * (s.gravityX * x(i, 0) + s.gravityY * x(i, 1));
+        }
       },
       e.gravitational);
   auto count = list.count;
@@ -74,7 +86,9 @@ EnergyReport computeEnergy(ExecutionSpace const& space, ParticleArrays<MemorySpa
           const double dx = s.periodic.minimumImage(x(j, 0) - x(i, 0));
           const double dy = x(j, 1) - x(i, 1);
           const double delta = radius(i) + radius(j) - math::sqrt(dx * dx + dy * dy);
-          if (delta > 0.0) { // each pair is seen from both sides: half each time
+          if (delta > 0.0 &&
+              (isFree(kind(i)) ||
+               isFree(kind(j)))) { // each pair is seen from both sides: half each time
             sum +=
                 0.25 * (s.particle.kn * delta * delta + s.particle.kt * shear(i, k) * shear(i, k));
           }
@@ -86,6 +100,9 @@ EnergyReport computeEnergy(ExecutionSpace const& space, ParticleArrays<MemorySpa
       "hikiln::dem::energyElasticWall", policy,
       KOKKOS_LAMBDA(int i, double& sum) {
         ContactFrame fr;
+        if (!isFree(kind(i))) {
+          return;
+        }
         if (s.walls.drum.enabled &&
             drumFrame(s.walls.drum, x(i, 0), x(i, 1), 0.0, 0.0, 0.0, radius(i), fr)) {
           sum += 0.5 * (s.wall.kn * fr.overlap * fr.overlap +
@@ -114,16 +131,19 @@ MomentumReport computeMomentum(ExecutionSpace const& space, ParticleArrays<Memor
   auto w = p.angularVelocity;
   auto m = p.mass;
   auto inertia = p.inertia;
+  auto kind = p.kind;
   Kokkos::parallel_reduce(
       "hikiln::dem::momentumX", policy,
-      KOKKOS_LAMBDA(int i, double& sum) { sum += m(i) * v(i, 0); }, r.px);
+      KOKKOS_LAMBDA(int i, double& sum) { sum += isFree(kind(i)) ? m(i) * v(i, 0) : 0.0; }, r.px);
   Kokkos::parallel_reduce(
       "hikiln::dem::momentumY", policy,
-      KOKKOS_LAMBDA(int i, double& sum) { sum += m(i) * v(i, 1); }, r.py);
+      KOKKOS_LAMBDA(int i, double& sum) { sum += isFree(kind(i)) ? m(i) * v(i, 1) : 0.0; }, r.py);
   Kokkos::parallel_reduce(
       "hikiln::dem::angularMomentum", policy,
       KOKKOS_LAMBDA(int i, double& sum) {
-        sum += m(i) * (x(i, 0) * v(i, 1) - x(i, 1) * v(i, 0)) + inertia(i) * w(i);
+        if (isFree(kind(i))) {
+          sum += m(i) * (x(i, 0) * v(i, 1) - x(i, 1) * v(i, 0)) + inertia(i) * w(i);
+        }
       },
       r.angular);
   return r;

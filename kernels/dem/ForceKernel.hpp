@@ -8,6 +8,13 @@
 /// The time step stores no per-contact forces (they would double the list's memory traffic);
 /// computeContactForces() re-evaluates them for the current state when a sampler needs them.
 /// Slots are tested with the squared distance before any neighbour velocity is loaded.
+///
+/// Fixed and shell particles (ParticleKind) are bodies of infinite mass: a contact of a free
+/// particle of mass m with one of them uses m_eff = m in the dashpot (the limit of
+/// m m_j / (m + m_j) for m_j -> infinity; both sides of the pair use it, so the pair stays exactly
+/// antisymmetric), two of them never interact, and they feel no gravity and no analytic walls.
+/// Their force and torque are still the sum of their contacts with free particles (the load on
+/// the base, for samplers) but nothing integrates them.
 
 #include "kernels/common/Compat.hpp"
 #include "kernels/dem/ContactLaw.hpp"
@@ -49,6 +56,7 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
   Vec x, v, f, vOut;
   Scalar w, tq, wOut, radius, mass, invM, invI;
   Kokkos::View<int*, MemorySpace> count;
+  Kokkos::View<std::uint8_t*, MemorySpace> kind;
   Kokkos::View<int**, MemorySpace> index;
   Kokkos::View<double**, MemorySpace> shear, slotFn, slotFt;
   Wall wallShear, wallFn, wallFt;
@@ -85,6 +93,7 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
     const double xi = x(i, 0), yi = x(i, 1);
     const double vxi = v(i, 0), vyi = v(i, 1);
     const double wi = w(i), ri = radius(i), mi = mass(i);
+    const bool freeI = isFree(kind(i));
     double fx = 0.0, fy = 0.0, t = 0.0;
     const int n = count(i) < capacity ? count(i) : capacity;
     for (int k = 0; k < n; ++k) { // ascending neighbour id: a fixed summation order
@@ -95,7 +104,10 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
       const double radsum = ri + rj;
       ContactFrame fr;
       // distance first: a slot out of contact loads no velocities (pairFrame repeats the test)
-      if (!(dx * dx + dy * dy < radsum * radsum) ||
+      // (and two non-free particles never interact)
+      const bool near = dx * dx + dy * dy < radsum * radsum;
+      const bool freeJ = near ? isFree(kind(j)) : true;
+      if (!near || !(freeI || freeJ) ||
           !pairFrame(dx, dy, v(j, 0) - vxi, v(j, 1) - vyi, ri, rj, wi, w(j), fr)) {
         if (Sample) {
           slotFn(i, k) = 0.0;
@@ -107,8 +119,8 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
       }
       const double rr = s.particle.rolling ? rollingRadius(ri, rj) : 0.0;
       const ContactForce c =
-          evaluateContact(s.particle, fr, effectiveMass(mi, mass(j)), rr, wi - w(j), shear(i, k),
-                          s.dt, Sample ? false : s.updateHistory);
+          evaluateContact(s.particle, fr, pairEffectiveMass(mi, freeI, mass(j), freeJ), rr,
+                          wi - w(j), shear(i, k), s.dt, Sample ? false : s.updateHistory);
       if (Sample) {
         slotFn(i, k) = c.normal;
         slotFt(i, k) = c.tangential;
@@ -121,23 +133,25 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
     }
     ContactFrame fr;
     if (s.walls.drum.enabled) {
-      const bool touching = drumFrame(s.walls.drum, xi, yi, vxi, vyi, wi, ri, fr);
+      const bool touching = freeI && drumFrame(s.walls.drum, xi, yi, vxi, vyi, wi, ri, fr);
       wallContact(i, 0, touching, fr, mi, ri, wi - s.walls.drum.angularVelocity, fx, fy, t);
     }
     for (int k = 0; k < s.walls.numFlat; ++k) {
-      const bool touching = flatFrame(s.walls.flat[k], xi, yi, vxi, vyi, wi, ri, fr);
+      const bool touching = freeI && flatFrame(s.walls.flat[k], xi, yi, vxi, vyi, wi, ri, fr);
       wallContact(i, 1 + k, touching, fr, mi, ri, wi, fx, fy, t);
     }
     if (Sample) {
       return;
     }
-    fx += mi * s.gravityX;
-    fy += mi * s.gravityY;
+    if (freeI) {
+      fx += mi * s.gravityX;
+      fy += mi * s.gravityY;
+    }
     f(i, 0) = fx;
     f(i, 1) = fy;
     tq(i) = t;
     if (Kick) {
-      const double halfDt = 0.5 * s.dt;
+      const double halfDt = freeI ? 0.5 * s.dt : 0.0; // prescribed velocities stay as they are
       vOut(i, 0) = halfKick(vxi, halfDt, fx, invM(i));
       vOut(i, 1) = halfKick(vyi, halfDt, fy, invM(i));
       wOut(i) = halfKick(wi, halfDt, t, invI(i));
@@ -166,6 +180,7 @@ void launchForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const
   fun.invM = p.inverseMass;
   fun.invI = p.inverseInertia;
   fun.count = list.count;
+  fun.kind = p.kind;
   fun.index = list.index;
   fun.shear = list.shear;
   fun.slotFn = list.normalForce;

@@ -19,6 +19,19 @@ namespace hikiln::dem {
 /// I = 2/5 m r^2. Disc: a cylinder of thickness t, m = pi r^2 t rho, I = 1/2 m r^2.
 enum class MassConvention { Sphere, Disc };
 
+/// \brief How a particle moves (one byte per particle in ParticleArrays::kind).
+/// Free: integrated from forces. Fixed: glued in place (v = 0, omega = 0), e.g. the rough base of a
+/// chute. Shell: attached to the rotating drum shell, its position, velocity omega x r and spin
+/// omega prescribed exactly from the shell's rotation (PrescribedMotion.hpp). Fixed and Shell
+/// particles feel no gravity and no analytic walls; they act on free particles through the normal
+/// contact law as bodies of infinite mass, and two of them never interact.
+enum class ParticleKind : std::uint8_t { Free = 0, Fixed = 1, Shell = 2 };
+
+/// \brief True for particles integrated from their forces (kind byte as stored).
+KOKKOS_INLINE_FUNCTION bool isFree(std::uint8_t kind) {
+  return kind == static_cast<std::uint8_t>(ParticleKind::Free);
+}
+
 /// \brief Mass of a particle of radius r and density rho under the given convention.
 KOKKOS_INLINE_FUNCTION double particleMass(MassConvention convention, double r, double rho,
                                            double thickness) {
@@ -48,6 +61,7 @@ template <class MemorySpace> struct ParticleArrays {
   view_type<double*> inverseMass;     ///< 1/mass, kept in step with mass
   view_type<double*> inverseInertia;  ///< 1/inertia
   view_type<std::int64_t*> id;        ///< global tag, stable across reordering
+  view_type<std::uint8_t*> kind;      ///< ParticleKind; zero-filled storage is all Free
 
   ParticleArrays() = default;
 
@@ -97,6 +111,7 @@ template <class MemorySpace> struct ParticleArrays {
     make(inverseMass, "hikiln::dem::inverseMass");
     make(inverseInertia, "hikiln::dem::inverseInertia");
     make(id, "hikiln::dem::id");
+    make(kind, "hikiln::dem::kind");
     _count = 0;
     setCount(count);
   }
@@ -114,6 +129,7 @@ template <class MemorySpace> struct ParticleArrays {
     std::swap(inverseMass, other.inverseMass);
     std::swap(inverseInertia, other.inverseInertia);
     std::swap(id, other.id);
+    std::swap(kind, other.kind);
     std::swap(_count, other._count);
   }
 
@@ -138,6 +154,7 @@ ParticleArrays<DstSpace> copyParticles(const ParticleArrays<SrcSpace>& src) {
   Kokkos::deep_copy(dst.inverseMass, src.inverseMass);
   Kokkos::deep_copy(dst.inverseInertia, src.inverseInertia);
   Kokkos::deep_copy(dst.id, src.id);
+  Kokkos::deep_copy(dst.kind, src.kind);
   return dst;
 }
 

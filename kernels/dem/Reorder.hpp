@@ -42,6 +42,7 @@ void permuteParticles(ExecutionSpace const& space, PermutationView const& permut
         d.inverseMass(k) = s.inverseMass(o);
         d.inverseInertia(k) = s.inverseInertia(o);
         d.id(k) = s.id(o);
+        d.kind(k) = s.kind(o);
       });
 }
 
@@ -101,6 +102,7 @@ void permuteParticlesInPlace(ExecutionSpace const& space, PermutationView const&
   permuteView(space, permutation, n, p.inverseMass);
   permuteView(space, permutation, n, p.inverseInertia);
   permuteView(space, permutation, n, p.id);
+  permuteView(space, permutation, n, p.kind);
 }
 
 /// \brief inverse(permutation(k)) = k for k in [0, n).

@@ -27,13 +27,13 @@ struct DrumWall {
 
 /// \brief Rigid straight wall through (pointX, pointY) with unit normal (normalX, normalY) pointing
 /// into the particle side; its surface slides at tangentialVelocity along (normalY, -normalX)
-/// (+x for a floor with normal +y). roughness is a hook for a future rough-wall model and must
-/// stay 0.
+/// (+x for a floor with normal +y). Analytic walls are smooth: a rough wall is built from glued
+/// discs (ParticleKind::Fixed, e.g. a chute base, or ParticleKind::Shell on the drum), which meet
+/// the flow through the ordinary particle contact law.
 struct FlatWall {
   double pointX = 0.0, pointY = 0.0;
   double normalX = 0.0, normalY = 1.0;
   double tangentialVelocity = 0.0;
-  double roughness = 0.0;
 };
 
 /// \brief All analytic walls of a system (trivially copyable into kernels).

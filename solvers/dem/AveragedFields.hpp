@@ -55,6 +55,9 @@ struct CellFields {
   std::vector<double> contactXX, contactXY, contactYX, contactYY;
   std::vector<double> granularTemperature, strainRate, pressure, shearStress, viscosity, frictionM;
   std::vector<double> particlesPerSample; ///< mean number of particle centres in the cell
+  /// Mass-weighted mean particle temperature (K) over the samples, NaN where no particle was
+  /// seen; empty without heat (filled by the heat driver, not by finalizeAverages()).
+  std::vector<double> temperature;
   std::vector<std::uint8_t> valid;
   /// \brief Number of cells.
   std::size_t size() const { return slow * fast; }

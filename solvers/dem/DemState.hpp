@@ -24,6 +24,10 @@ struct DemState {
   std::vector<double> mass;
   std::vector<double> inertia;
   std::vector<double> wallShear;
+  /// ParticleKind per particle (empty: all free, as states written before kinds existed).
+  std::vector<std::uint8_t> kind;
+  double shellAngle = 0.0;       ///< rotation of the shell particles since their home positions
+  std::vector<double> shellHome; ///< home positions of shell particles, in id order (x, y, ...)
   /// Pair history, one entry per (particle, neighbour) slot with a non-zero shear displacement;
   /// both directions of a pair are present.
   std::vector<std::int64_t> contactId;

@@ -33,6 +33,10 @@
 ///   results are bitwise identical for any thread count, and independent of when rebuilds and
 ///   reorders happen (non-touching slots contribute nothing). Hence exportState()/importState()
 ///   continue bitwise identically even though the imported system rebuilds its list at once.
+/// - Particle kinds (ParticleKind): fixed particles never move; shell particles (ids consecutive)
+///   are rotated rigidly with the drum from their home positions (their positions at
+///   setParticles) by the shell angle, the sum of omega dt over the steps (kept on the host, so
+///   the same on every backend). Both act on free particles as bodies of infinite mass.
 
 #include "kernels/common/Compat.hpp"
 #include "kernels/dem/CellGrid.hpp"
@@ -43,6 +47,7 @@
 #include "kernels/dem/NeighborList.hpp"
 #include "kernels/dem/ParticleArrays.hpp"
 #include "kernels/dem/Periodic.hpp"
+#include "kernels/dem/PrescribedMotion.hpp"
 #include "kernels/dem/Reorder.hpp"
 #include "kernels/dem/TimeStep.hpp"
 #include "kernels/dem/Walls.hpp"
@@ -107,10 +112,6 @@ public:
       }
       w.normalX /= len;
       w.normalY /= len;
-      if (w.roughness != 0.0) {
-        throw std::invalid_argument("hikiln::dem::FlatWall: roughness is a hook for a future "
-                                    "rough-wall model and is not implemented; leave it 0");
-      }
     }
     if (_config.periodic.enabled && !(_config.periodic.length > 0.0)) {
       throw std::invalid_argument("hikiln::dem::DemConfig: periodic length must be > 0");
@@ -132,9 +133,13 @@ public:
 
   /// \brief Takes the live particles of a host container (radius, mass and inertia set, unique
   /// ids), clears all contact history, resets the clock, builds the list and evaluates the initial
-  /// forces (history not advanced, as LAMMPS's set-up).
-  void setParticles(const host_particles_type& host) {
+  /// forces (history not advanced, as LAMMPS's set-up). Fixed particles get v = omega = 0, shell
+  /// particles the shell's motion; their positions now are their home positions (shell angle 0).
+  void setParticles(const host_particles_type& given) {
+    host_particles_type host = copyParticles<Kokkos::HostSpace>(given); // placeNonFree edits it
     validateHost(host);
+    setShellHome(host, 0.0, {});
+    placeNonFree(host);
     _particles = copyParticles<memory_space>(host);
     updateInverseMassProperties(_space, _particles);
     allocateContactState(
@@ -155,8 +160,12 @@ public:
   /// accessor that exposes the state, see the file comment).
   void step() {
     requireParticles();
+    if (_shellHome.extent(0) > 0) {
+      _shellAngle += _config.walls.drum.angularVelocity * _settings.dt;
+      updateShellMotion();
+    }
     const double d2 = initialIntegrate(_space, _particles, _settings.dt, _settings.periodic,
-                                       _buildPosition, _pendingHalfDt);
+                                       _buildPosition, _pendingHalfDt, _shell, _shellHome);
     _pendingHalfDt = 0.0;
     if (_rebuildRequested || d2 > 0.25 * _skin * _skin) {
       rebuild(sortDue());
@@ -192,6 +201,7 @@ public:
   void setDrumAngularVelocity(double omega) {
     _config.walls.drum.angularVelocity = omega;
     _settings.walls.drum.angularVelocity = omega;
+    updateShellMotion(); // shell particles take the new speed from the next step on
     ++_version;
   }
 
@@ -225,8 +235,15 @@ public:
     DemState s;
     s.step = _step;
     s.time = _time;
+    s.shellAngle = _shellAngle;
+    const auto home = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, _shellHome);
+    for (std::size_t k = 0; k < home.extent(0); ++k) {
+      s.shellHome.push_back(home(k, 0));
+      s.shellHome.push_back(home(k, 1));
+    }
     for (std::size_t i = 0; i < n; ++i) {
       s.id.push_back(p.id(i));
+      s.kind.push_back(p.kind(i));
       for (int c = 0; c < 2; ++c) {
         s.position.push_back(p.position(i, c));
         s.velocity.push_back(p.velocity(i, c));
@@ -265,6 +282,9 @@ public:
         s.mass.size() != n || s.inertia.size() != n || s.wallShear.size() != wallSlotCount * n) {
       bad("inconsistent array sizes");
     }
+    if (!s.kind.empty() && s.kind.size() != n) {
+      bad("inconsistent array sizes (kind)");
+    }
     if (s.contactNeighborId.size() != s.contactId.size() ||
         s.contactShear.size() != s.contactId.size()) {
       bad("inconsistent contact history sizes");
@@ -282,8 +302,10 @@ public:
       host.radius(i) = s.radius[i];
       host.mass(i) = s.mass[i];
       host.inertia(i) = s.inertia[i];
+      host.kind(i) = s.kind.empty() ? std::uint8_t(0) : s.kind[i]; // older states: all free
     }
     validateHost(host);
+    setShellHome(host, s.shellAngle, s.shellHome);
     // pair history rows keyed by the particle's index here, sorted by neighbour id
     std::vector<std::int64_t> sortedIds(s.id);
     std::vector<std::size_t> order(n);
@@ -399,7 +421,8 @@ public:
     std::size_t total = bytes(p.position) + bytes(p.velocity) + bytes(p.angularVelocity) +
                         bytes(p.force) + bytes(p.torque) + bytes(p.radius) + bytes(p.mass) +
                         bytes(p.inertia) + bytes(p.inverseMass) + bytes(p.inverseInertia) +
-                        bytes(p.id);
+                        bytes(p.id) + bytes(p.kind);
+    total += bytes(_shellHome);
     total += bytes(_buildPosition) + _list.bytes() + bytes(_walls.shear);
     total += bytes(_bins.cellOfParticle) + bytes(_bins.cellCount) + bytes(_bins.cellOffset) +
              bytes(_bins.cellParticles);
@@ -420,6 +443,8 @@ public:
   double timeStep() const { return _settings.dt; }
   /// \brief Neighbour skin in use (m).
   double skin() const { return _skin; }
+  /// \brief Rotation angle of the shell particles since their home positions (rad).
+  double shellAngle() const { return _shellAngle; }
   /// \brief Simulated time (s).
   double time() const { return _time; }
   /// \brief Steps taken since setParticles (or the imported step count).
@@ -436,9 +461,18 @@ private:
     }
   }
 
-  static void validateHost(const host_particles_type& h) {
+  void validateHost(const host_particles_type& h) const {
     std::vector<std::int64_t> ids;
     for (std::size_t i = 0; i < h.count(); ++i) {
+      if (h.kind(i) > static_cast<std::uint8_t>(ParticleKind::Shell)) {
+        throw std::invalid_argument("hikiln::dem::DemSystem: particle " + std::to_string(h.id(i)) +
+                                    " has an unknown kind " + std::to_string(h.kind(i)));
+      }
+      if (h.kind(i) == static_cast<std::uint8_t>(ParticleKind::Shell) &&
+          !_config.walls.drum.enabled) {
+        throw std::invalid_argument("hikiln::dem::DemSystem: shell-attached particle " +
+                                    std::to_string(h.id(i)) + " needs a drum wall");
+      }
       if (!(h.radius(i) > 0.0) || !(h.mass(i) > 0.0) || !(h.inertia(i) > 0.0)) {
         throw std::invalid_argument("hikiln::dem::DemSystem: particle " + std::to_string(h.id(i)) +
                                     " needs radius, mass and inertia > 0");
@@ -451,6 +485,60 @@ private:
     std::sort(ids.begin(), ids.end());
     if (std::adjacent_find(ids.begin(), ids.end()) != ids.end()) {
       throw std::invalid_argument("hikiln::dem::DemSystem: particle ids must be unique");
+    }
+  }
+
+  // Shell home positions from a host set: `home` (2 per shell particle in id order) when given,
+  // else the current positions (at shell angle 0). Shell ids must be consecutive.
+  void setShellHome(const host_particles_type& h, double angle, const std::vector<double>& home) {
+    std::vector<std::pair<std::int64_t, std::size_t>> shell;
+    for (std::size_t i = 0; i < h.count(); ++i) {
+      if (h.kind(i) == static_cast<std::uint8_t>(ParticleKind::Shell)) {
+        shell.emplace_back(h.id(i), i);
+      }
+    }
+    std::sort(shell.begin(), shell.end());
+    for (std::size_t k = 1; k < shell.size(); ++k) {
+      if (shell[k].first != shell[0].first + static_cast<std::int64_t>(k)) {
+        throw std::invalid_argument("hikiln::dem::DemSystem: shell-attached particles need "
+                                    "consecutive ids");
+      }
+    }
+    if (!home.empty() && home.size() != 2 * shell.size()) {
+      throw std::invalid_argument("hikiln::dem::DemState: shell home positions do not match the "
+                                  "shell-attached particles");
+    }
+    Kokkos::View<double* [2], Kokkos::HostSpace> hostHome("hikiln::dem::shellHomeHost",
+                                                          shell.size());
+    for (std::size_t k = 0; k < shell.size(); ++k) {
+      for (int c = 0; c < 2; ++c) {
+        hostHome(k, c) = home.empty() ? h.position(shell[k].second, c) : home[2 * k + c];
+      }
+    }
+    _shellHome = Kokkos::View<double* [2], memory_space>(
+        Kokkos::view_alloc(_space, std::string("hikiln::dem::shellHome")), shell.size());
+    Kokkos::deep_copy(_space, _shellHome, hostHome);
+    _shell.firstId = shell.empty() ? 0 : shell[0].first;
+    _shellAngle = angle;
+    updateShellMotion();
+  }
+
+  void updateShellMotion() {
+    _shell.cosAngle = std::cos(_shellAngle);
+    _shell.sinAngle = std::sin(_shellAngle);
+    _shell.angularVelocity = _config.walls.drum.angularVelocity;
+  }
+
+  // Prescribed state of a new set: fixed particles at rest, shell ones moving with the shell.
+  void placeNonFree(const host_particles_type& h) const {
+    for (std::size_t i = 0; i < h.count(); ++i) {
+      if (h.kind(i) == static_cast<std::uint8_t>(ParticleKind::Fixed)) {
+        h.velocity(i, 0) = h.velocity(i, 1) = h.angularVelocity(i) = 0.0;
+      } else if (h.kind(i) == static_cast<std::uint8_t>(ParticleKind::Shell)) {
+        h.velocity(i, 0) = -_shell.angularVelocity * h.position(i, 1);
+        h.velocity(i, 1) = _shell.angularVelocity * h.position(i, 0);
+        h.angularVelocity(i) = _shell.angularVelocity;
+      }
     }
   }
 
@@ -602,6 +690,9 @@ private:
   ForceSettings _settings;
   particles_type _particles;
   Kokkos::View<double* [2], memory_space> _buildPosition;
+  Kokkos::View<double* [2], memory_space> _shellHome; // shell particle k: id _shell.firstId + k
+  ShellMotion _shell;
+  double _shellAngle = 0.0;
   NeighborList<memory_space> _list;
   WallContactState<memory_space> _walls;
   CellBins<memory_space> _bins;

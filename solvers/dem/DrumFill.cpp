@@ -39,6 +39,7 @@ ParticleArrays<Kokkos::HostSpace> subset(const ParticleArrays<Kokkos::HostSpace>
     out.inverseMass(k) = p.inverseMass(i);
     out.inverseInertia(k) = p.inverseInertia(i);
     out.id(k) = p.id(i);
+    out.kind(k) = p.kind(i);
   }
   return out;
 }
@@ -75,7 +76,10 @@ ParticleArrays<Kokkos::HostSpace> generateDrumLattice(const FillSpec& s) {
   const double latticePacking = 0.25 * pi * s.meanDiameter * s.meanDiameter / (spacing * rowHeight);
   const double latticeFraction = std::min(0.95, s.overfill * s.fill * 0.82 / latticePacking);
   const double top = segmentHeightForFraction(s.drumRadius, latticeFraction);
-  const double inner = s.drumRadius - 0.51 * spacing;
+  require(s.shellBumpDiameter >= 0 && s.shellBumpDiameter < 0.25 * s.drumRadius,
+          "shell bump diameter must be in [0, R/4)");
+  require(s.shellBumpSpacing >= 1, "shell bump spacing must be >= 1 bump diameter");
+  const double inner = s.drumRadius - s.shellBumpDiameter - 0.51 * spacing;
   std::vector<double> xs, ys;
   int row = 0;
   for (double y = -inner; y <= top; y += rowHeight, ++row) {
@@ -89,13 +93,30 @@ ParticleArrays<Kokkos::HostSpace> generateDrumLattice(const FillSpec& s) {
     }
   }
   require(!xs.empty(), "no particle fits: drum too small for the particles");
-  ParticleArrays<Kokkos::HostSpace> p(xs.size(), xs.size());
+  const std::size_t nFree = xs.size();
+  // the ring of glued shell discs, touching (spacing 1) or evenly gapped, centres at R - d_b/2
+  const double ringRadius = s.drumRadius - 0.5 * s.shellBumpDiameter;
+  const std::size_t nRing =
+      s.shellBumpDiameter > 0
+          ? static_cast<std::size_t>(
+                std::floor(2 * pi * ringRadius / (s.shellBumpSpacing * s.shellBumpDiameter)))
+          : 0;
+  ParticleArrays<Kokkos::HostSpace> p(nFree + nRing, nFree + nRing);
   SplitMix64 random(s.seed);
-  for (std::size_t i = 0; i < xs.size(); ++i) {
+  for (std::size_t i = 0; i < nFree; ++i) {
     p.position(i, 0) = xs[i];
     p.position(i, 1) = ys[i];
     p.radius(i) = 0.5 * (dMin + (dMax - dMin) * random.uniform());
     p.id(i) = static_cast<std::int64_t>(i);
+  }
+  for (std::size_t k = 0; k < nRing; ++k) {
+    const std::size_t i = nFree + k;
+    const double angle = 2 * pi * static_cast<double>(k) / static_cast<double>(nRing);
+    p.position(i, 0) = ringRadius * std::cos(angle);
+    p.position(i, 1) = ringRadius * std::sin(angle);
+    p.radius(i) = 0.5 * s.shellBumpDiameter;
+    p.id(i) = static_cast<std::int64_t>(i);
+    p.kind(i) = static_cast<std::uint8_t>(ParticleKind::Shell);
   }
   assignMassPropertiesHost(p, s.density, s.convention, s.thickness);
   return p;
@@ -103,20 +124,26 @@ ParticleArrays<Kokkos::HostSpace> generateDrumLattice(const FillSpec& s) {
 
 BedMeasurement measureBed(const ParticleArrays<Kokkos::HostSpace>& p, double R) {
   BedMeasurement m;
-  m.count = p.count();
-  if (m.count == 0)
-    return m;
-  double meanR = 0;
-  for (std::size_t i = 0; i < m.count; ++i) {
+  double meanR = 0, reach = R; // reach: the wall, or the inner side of the shell discs
+  for (std::size_t i = 0; i < p.count(); ++i) {
+    if (!isFree(p.kind(i))) {
+      reach = std::min(reach, std::hypot(p.position(i, 0), p.position(i, 1)) - p.radius(i));
+      continue;
+    }
     m.solidArea += discArea(p.radius(i));
     meanR += p.radius(i);
+    ++m.count;
   }
+  if (m.count == 0)
+    return m;
   meanR /= static_cast<double>(m.count);
   // Surface: the top of the highest particle per bin (4 mean diameters wide) across the bed.
   const double bin = 8 * meanR;
   const int nb = static_cast<int>(std::ceil(2 * R / bin));
   std::vector<double> highest(nb, -1e300);
-  for (std::size_t i = 0; i < m.count; ++i) {
+  for (std::size_t i = 0; i < p.count(); ++i) {
+    if (!isFree(p.kind(i)))
+      continue;
     const int b = std::clamp(static_cast<int>((p.position(i, 0) + R) / bin), 0, nb - 1);
     highest[b] = std::max(highest[b], p.position(i, 1) + p.radius(i));
   }
@@ -126,10 +153,12 @@ BedMeasurement measureBed(const ParticleArrays<Kokkos::HostSpace>& p, double R) 
     if (h > -1e299)
       sum += h, ++used;
   m.surfaceHeight = sum / used;
-  // Bulk fraction: centres in the disc of radius R - 4 r_mean below the surface minus 4 r_mean.
-  const double rIn = R - 4 * meanR, hIn = m.surfaceHeight - 4 * meanR;
+  // Bulk fraction: centres in the disc of radius reach - 4 r_mean below the surface - 4 r_mean.
+  const double rIn = reach - 4 * meanR, hIn = m.surfaceHeight - 4 * meanR;
   double inside = 0;
-  for (std::size_t i = 0; i < m.count; ++i) {
+  for (std::size_t i = 0; i < p.count(); ++i) {
+    if (!isFree(p.kind(i)))
+      continue;
     const double x = p.position(i, 0), y = p.position(i, 1);
     if (x * x + y * y < rIn * rIn && y < hIn)
       inside += discArea(p.radius(i));
@@ -153,7 +182,12 @@ ParticleArrays<Kokkos::HostSpace> trimToFill(const ParticleArrays<Kokkos::HostSp
   const double target = fill * bulkFraction * pi * R * R;
   std::vector<std::size_t> keep;
   double area = 0;
+  for (std::size_t i = 0; i < p.count(); ++i)
+    if (!isFree(p.kind(i)))
+      keep.push_back(i); // the shell discs stay
   for (std::size_t i : order) {
+    if (!isFree(p.kind(i)))
+      continue;
     const double a = discArea(p.radius(i));
     if (area + 0.5 * a > target)
       break;

@@ -9,6 +9,12 @@
 /// 3. measureBed() finds the settled bulk solid fraction phi; trimToFill() removes the highest
 ///    particles until the solids area equals fill * phi * pi R^2;
 /// 4. the caller settles again and measureBed() reports the fill reached.
+///
+/// A rough shell (shellBumpDiameter > 0) is a ring of discs glued to the shell
+/// (ParticleKind::Shell, rotating with it) whose centres sit at R - d_b/2; the lattice then starts
+/// inside R - d_b. Fill stays relative to the full drum area pi R^2 (the ring is not bed), so a
+/// rough drum holds about as many free particles as a smooth one. measureBed() and trimToFill()
+/// look at free particles only (trimming keeps the ring).
 
 #include "kernels/dem/ParticleArrays.hpp"
 
@@ -27,7 +33,9 @@ struct FillSpec {
   MassConvention convention = MassConvention::Sphere;
   double thickness = 0.02; ///< m, for MassConvention::Disc
   std::uint64_t seed = 12345;
-  double overfill = 1.35; ///< lattice area over the target bed area
+  double overfill = 1.35;         ///< lattice area over the target bed area
+  double shellBumpDiameter = 0.0; ///< m; 0: smooth shell, else the ring of glued discs
+  double shellBumpSpacing = 1.0;  ///< ring centre distance over the bump diameter (>= 1)
 };
 
 /// \brief What measureBed() finds in a settled (or flowing) bed.
@@ -46,11 +54,13 @@ double circularSegmentArea(double radius, double height);
 double segmentHeightForFraction(double radius, double fraction);
 
 /// \brief Discs on a hexagonal lattice filling the lower part of the drum (ids 0..n-1, at rest,
-/// mass properties set). Throws std::invalid_argument for impossible specifications.
+/// mass properties set), followed by the ring of shell discs when the spec asks for a rough shell
+/// (ids n.., kind Shell). Throws std::invalid_argument for impossible specifications.
 ParticleArrays<Kokkos::HostSpace> generateDrumLattice(const FillSpec& spec);
 
-/// \brief Measures the bed: bulk solid fraction from the particles whose centres lie at least two
-/// mean diameters inside the wall and below the surface, and the fill implied by it.
+/// \brief Measures the bed (free particles only): bulk solid fraction from the particles whose
+/// centres lie at least two mean diameters inside the wall (or the shell discs' inner reach) and
+/// below the surface, and the fill implied by it.
 BedMeasurement measureBed(const ParticleArrays<Kokkos::HostSpace>& particles, double drumRadius);
 
 /// \brief Copy of `particles` without the highest ones, so that the solid area is

@@ -54,15 +54,15 @@ public:
     cg::depositCells(_space, _settings.cartesianGrid(), p, system.neighborList(),
                      system.wallContacts(), f.walls, f.periodic, _cartesian);
     const double omega = f.walls.drum.angularVelocity;
+    const auto host = system.hostParticles();
     cg::ShellBins bins;
-    bins.radius = _settings.drumRadius;
+    bins.radius = shellInnerRadius(host, _settings.drumRadius); // a rough shell's bump tops
     bins.ntheta = _settings.angularCells;
     bins.touchGap = _settings.touchGap;
     bins.shearSign = cg::shellMotionSign(omega);
     cg::depositShell(_space, bins, p, system.wallContacts(), _wall);
     _space.fence();
-    const double slip =
-        wallSlip(system.hostParticles(), _settings.drumRadius, omega, _settings.touchGap);
+    const double slip = wallSlip(host, _settings.drumRadius, omega, _settings.touchGap);
     if (std::isfinite(slip)) {
       _slipSum += slip;
       ++_slipSamples;

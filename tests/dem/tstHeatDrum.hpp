@@ -208,6 +208,17 @@ TEST(TEST_CATEGORY, heat_drum_restart_continues_bitwise) {
     expectSameTemperatures(secondHeat.exportState(), thermal); // reads back identically
   }
   EXPECT_EQ(secondHeat.time(), thermal.time);
+  // the sub-step limit travels with the state: a restart splits heat steps as the first run did,
+  // even where the temperatures now would give another limit
+  EXPECT_EQ(thermal.stableTimeStep, firstHeat.stableTimeStep());
+  EXPECT_EQ(secondHeat.stableTimeStep(), firstHeat.stableTimeStep());
+  DemHeatState cooler = thermal;
+  for (double& t : cooler.temperature) {
+    t = std::min(t, 700.0);
+  }
+  DemHeat<space> coolerHeat(drumHeat(0.0));
+  coolerHeat.importState(second, cooler);
+  EXPECT_EQ(coolerHeat.stableTimeStep(), firstHeat.stableTimeStep());
   advance(second, secondHeat, k, 1);
   test::expectBitwiseEqual(test::byId(first), test::byId(second));
   SCOPED_TRACE("continued");

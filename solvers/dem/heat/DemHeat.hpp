@@ -222,6 +222,7 @@ public:
     s.time = _time;
     s.subSteps = _subSteps;
     s.initialEnergy = _initialEnergy;
+    s.stableTimeStep = _stableTimeStep;
     for (std::size_t i = 0; i < _n; ++i) {
       s.id.push_back(ids(i));
       for (int m = 0; m < s.shells; ++m) {
@@ -242,7 +243,7 @@ public:
   }
 
   /// \brief Attaches to the system's current particles with an exported state (same particle
-  /// ids, same shell count); continues the clock and the energy reference.
+  /// ids, same shell count); continues the clock, the energy reference and the sub-step limit.
   void importState(const system_type& system, const DemHeatState& s) {
     const auto bad = [](const std::string& what) {
       throw std::invalid_argument("hikiln::dem::DemHeatState: " + what);
@@ -316,6 +317,9 @@ public:
     _time = s.time;
     _subSteps = s.subSteps;
     _initialEnergy = s.initialEnergy;
+    if (s.stableTimeStep > 0.0) {
+      _stableTimeStep = s.stableTimeStep; // sub-steps as before the restart
+    }
   }
 
   /// \brief Shell temperatures (n x shells, K; rows in the order of the last heat step).

@@ -1,0 +1,272 @@
+#include "drivers/cfd/ContinuumRun.hpp"
+
+#include "drivers/app/Commands.hpp"
+#include "drivers/case/CaseFile.hpp"
+#include "drivers/cfd/ContinuumCase.hpp"
+#include "drivers/dem/TimeSeries.hpp"
+#include "drivers/io/Hdf5File.hpp"
+#include "drivers/io/Summary.hpp"
+#include "drivers/io/Xdmf.hpp"
+#include "solvers/cfd/TwoPhaseSolver.hpp"
+
+#include <Kokkos_Core.hpp>
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <vector>
+
+namespace hikiln::cfd {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Space = Kokkos::DefaultExecutionSpace;
+using Solver = TwoPhaseSolver<Space>;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// Height above the drum centre of a flat bed filling `fill` of a circle of radius R: the
+/// circular segment below y has area R^2 acos(-y / R) + y sqrt(R^2 - y^2) ... solved by bisection.
+double bedLevel(double R, double fill) {
+  const auto segment = [R](double y) { // area below the chord at height y
+    const double c = std::clamp(y / R, -1.0, 1.0);
+    return R * R * (constants::pi - std::acos(c)) + y * std::sqrt(std::max(R * R - y * y, 0.0));
+  };
+  const double target = fill * constants::pi * R * R;
+  double lo = -R, hi = R;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (segment(mid) < target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/// Host copies of the cell fields of one output, [ny][nx] with x fastest.
+struct HostFields {
+  std::map<std::string, std::vector<double>> scalars;
+  std::vector<double> velocity; ///< [ny][nx][2], cell-centred (mean of the two faces)
+};
+
+HostFields gatherFields(Solver const& solver) {
+  const Grid g = solver.grid();
+  const int o = g.ghost;
+  HostFields out;
+  const auto copy = [&](std::string const& name, Field<Space::memory_space> const& f) {
+    if (f.extent(0) == 0) {
+      return;
+    }
+    const auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, f);
+    std::vector<double>& v = out.scalars[name];
+    v.resize(static_cast<std::size_t>(g.nx) * g.ny);
+    for (int j = 0; j < g.ny; ++j) {
+      for (int i = 0; i < g.nx; ++i) {
+        v[static_cast<std::size_t>(j) * g.nx + i] = h(i + o, j + o, 0);
+      }
+    }
+  };
+  copy("volume_fraction", solver.volumeFraction());
+  copy("pressure", solver.pressure());
+  copy("bed_pressure", solver.bedPressureField());
+  copy("viscosity", solver.viscosity());
+  copy("strain_rate", solver.strainRate());
+  copy("density", solver.density());
+  copy("capacity", solver.cutCells().capacity);
+  copy("temperature", solver.temperature());
+  // shear stress invariant q = mu gamma_dot (physics.md 3), for the DEM comparison
+  std::vector<double>& q = out.scalars["shear_stress"];
+  q.resize(out.scalars["viscosity"].size());
+  for (std::size_t c = 0; c < q.size(); ++c) {
+    q[c] = out.scalars["viscosity"][c] * out.scalars["strain_rate"][c];
+  }
+  const auto u =
+      Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, solver.velocity().comp[0]);
+  const auto v =
+      Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, solver.velocity().comp[1]);
+  out.velocity.resize(static_cast<std::size_t>(g.nx) * g.ny * 2);
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) {
+      const std::size_t c = static_cast<std::size_t>(j) * g.nx + i;
+      out.velocity[2 * c] = 0.5 * (u(i + o, j + o, 0) + u(i + 1 + o, j + o, 0));
+      out.velocity[2 * c + 1] = 0.5 * (v(i + o, j + o, 0) + v(i + o, j + 1 + o, 0));
+    }
+  }
+  return out;
+}
+
+void writeOutput(fs::path const& out, int index, Solver const& solver, HostFields const& f,
+                 io::RunInfo const& info, std::vector<io::XdmfGridStep>& steps) {
+  const Grid g = solver.grid();
+  const std::string name = fmt::format("fields_{:04d}.h5", index);
+  io::H5File file = io::H5File::create((out / name).string());
+  io::writeStandardAttributes(file, info);
+  file.setAttribute("/", "time", solver.time());
+  const std::vector<hsize_t> shape = {static_cast<hsize_t>(g.ny), static_cast<hsize_t>(g.nx)};
+  const std::map<std::string, std::string> units = {
+      {"volume_fraction", "1"}, {"pressure", "Pa"},     {"bed_pressure", "Pa"},
+      {"viscosity", "Pa s"},    {"strain_rate", "1/s"}, {"density", "kg/m^3"},
+      {"capacity", "1"},        {"temperature", "K"},   {"shear_stress", "Pa"}};
+  io::XdmfGridStep step;
+  step.time = solver.time();
+  step.h5File = (out / name).string();
+  step.group = "/fields";
+  step.dim = 2;
+  step.cells = {g.nx, g.ny, 1};
+  step.origin = {g.x0, g.y0, 0.0};
+  step.spacing = {g.hx, g.hy, g.hz};
+  for (auto const& [key, values] : f.scalars) {
+    file.writeDataset("/fields/" + key, values, shape, units.at(key));
+    step.attributes.push_back({key, key});
+  }
+  file.writeDataset("/fields/velocity", f.velocity,
+                    {static_cast<hsize_t>(g.ny), static_cast<hsize_t>(g.nx), 2}, "m/s");
+  step.attributes.push_back({"velocity", "velocity", 2});
+  file.commit();
+  steps.push_back(step);
+  io::writeXdmfGrids((out / "fields.xmf").string(), steps);
+}
+
+} // namespace
+
+int runContinuum(ContinuumRunOptions const& o) {
+  const auto wallStart = Clock::now();
+  const auto file = cases::CaseFile::load(o.caseFile, continuumSchema(), o.overrides);
+  const ContinuumSettings s = continuumSettingsFromCase(file);
+  const fs::path out(o.outputDirectory);
+  fs::create_directories(out);
+  file.writeResolved((out / "case.resolved.yaml").string());
+  const io::RunInfo info{"continuum", app::defaultBackend(), file.resolvedYaml()};
+
+  const Grid grid = drumGrid(s.cells, s.diameter);
+  DrumShell shell;
+  shell.radius = 0.5 * s.diameter;
+  shell.omega = s.omega();
+  Solver solver(Space{}, grid, shell, s.params);
+  solver.setFlatBed(bedLevel(shell.radius, s.fill));
+  if (s.params.energy) {
+    auto T = Kokkos::create_mirror_view(Kokkos::HostSpace{}, solver.temperature());
+    Kokkos::deep_copy(T, 0.5 * (s.initialLeft + s.initialRight));
+    for (int j = 0; j < grid.ny; ++j) {
+      for (int i = 0; i < grid.nx; ++i) {
+        T(i + grid.ghost, j + grid.ghost, 0) =
+            grid.coordinate(Staggering::Cell, 0, i) < 0.0 ? s.initialLeft : s.initialRight;
+      }
+    }
+    Kokkos::deep_copy(solver.temperature(), T);
+  }
+  spdlog::info("continuum: {} x {} cells (h = {:.4g} m), drum D = {} m at {} rpm, fill {}, "
+               "rheology from {}",
+               grid.nx, grid.ny, grid.hx, s.diameter, s.rpm, s.fill, s.rheologySource);
+
+  const double solids0 = solver.solids();
+  const double heat0 = solver.heat();
+  double worstSolids = 0.0, worstHeat = 0.0, phiLo = 0.0, phiHi = 0.0, slipSum = 0.0;
+  double minDt = 1e300, maxDt = 0.0, maxDivergence = 0.0;
+  std::int64_t steps = 0, slipSamples = 0, viscousIterations = 0, pressureIterations = 0;
+  std::map<std::string, std::int64_t> limits;
+  std::vector<io::XdmfGridStep> outputs;
+  dem::TimeSeries series((out / "timeseries.csv").string(),
+                         {"time", "dt", "wall_slip", "solids_change", "max_speed"});
+  int outputIndex = 0;
+  {
+    const HostFields f = gatherFields(solver);
+    writeOutput(out, outputIndex++, solver, f, info, outputs);
+  }
+  const auto loopStart = Clock::now();
+  double nextOutput = s.outputInterval;
+  while (solver.time() < s.duration * (1.0 - 1e-12)) {
+    std::string reason;
+    double dt = solver.stableTimeStep(reason);
+    // land on the output times (a shorter step is always stable)
+    if (solver.time() + dt > nextOutput) {
+      dt = nextOutput - solver.time();
+      reason += ", shortened to an output time";
+    }
+    const TwoPhaseStepReport r = solver.step(dt);
+    ++steps;
+    ++limits[reason.substr(0, reason.find(','))];
+    minDt = std::min(minDt, dt);
+    maxDt = std::max(maxDt, dt);
+    maxDivergence = std::max(maxDivergence, r.maxDivergence);
+    viscousIterations += r.viscous.iterations;
+    pressureIterations += r.pressure.iterations;
+    worstSolids = std::max(worstSolids, std::fabs(r.solidsAfter - r.solidsBefore) / solids0);
+    if (s.params.energy && r.heatBefore != 0.0) {
+      worstHeat = std::max(worstHeat, std::fabs(r.heatAfter - r.heatBefore) / r.heatBefore);
+    }
+    spdlog::debug("t {:.4f} s, dt {:.3g} s ({}), iterations viscous {} pressure {}", solver.time(),
+                  dt, reason, r.viscous.iterations, r.pressure.iterations);
+    if (solver.time() >= nextOutput * (1.0 - 1e-12)) {
+      nextOutput += s.outputInterval;
+      const HostFields f = gatherFields(solver);
+      const double slip = solver.wallSlip();
+      if (std::isfinite(slip) && solver.time() > s.slipAfter) {
+        slipSum += slip;
+        ++slipSamples;
+      }
+      double speed = 0.0;
+      for (double v : f.velocity) {
+        speed = std::max(speed, std::fabs(v));
+      }
+      series.add({solver.time(), dt, 100.0 * slip, (solver.solids() - solids0) / solids0, speed});
+      series.flush();
+      writeOutput(out, outputIndex++, solver, f, info, outputs);
+      solver.phiRange(phiLo, phiHi);
+      spdlog::info("t = {:.2f} s: step {} (dt {:.3g} s, {}), wall slip {:.1f} %, max speed "
+                   "{:.3f} m/s, phi in [{:.3g}, {:.4g}], solids change {:.2e}",
+                   solver.time(), steps, dt, reason, 100.0 * slip, speed, phiLo, phiHi,
+                   (solver.solids() - solids0) / solids0);
+    }
+  }
+  const double loopSeconds = secondsSince(loopStart);
+  solver.phiRange(phiLo, phiHi);
+
+  nlohmann::json summary;
+  summary["stage"] = "continuum";
+  summary["case"] = o.caseFile;
+  summary["backend"] = app::defaultBackend();
+  summary["cells"] = {grid.nx, grid.ny};
+  summary["cell_size"] = grid.hx;
+  summary["rheology_source"] = s.rheologySource;
+  summary["simulated_time"] = solver.time();
+  summary["steps"] = steps;
+  summary["dt_min"] = minDt;
+  summary["dt_max"] = maxDt;
+  summary["dt_limited_by"] = limits;
+  summary["wall_slip_percent"] =
+      slipSamples > 0 ? nlohmann::json(100.0 * slipSum / slipSamples) : nlohmann::json(nullptr);
+  summary["wall_slip_samples"] = slipSamples;
+  summary["solids_relative_change_total"] = (solver.solids() - solids0) / solids0;
+  summary["solids_relative_change_worst_step"] = worstSolids;
+  summary["phi_min"] = phiLo;
+  summary["phi_max"] = phiHi;
+  summary["max_divergence"] = maxDivergence;
+  if (s.params.energy) {
+    summary["heat_relative_change_total"] = (solver.heat() - heat0) / heat0;
+    summary["heat_relative_change_worst_step"] = worstHeat;
+  }
+  summary["mean_viscous_iterations"] = steps > 0 ? double(viscousIterations) / steps : 0.0;
+  summary["mean_pressure_iterations"] = steps > 0 ? double(pressureIterations) / steps : 0.0;
+  summary["wall_seconds"] = secondsSince(wallStart);
+  summary["seconds_per_step"] = steps > 0 ? loopSeconds / steps : 0.0;
+  summary["cell_updates_per_second"] =
+      loopSeconds > 0.0 ? double(grid.numCells()) * steps / loopSeconds : 0.0;
+  summary["outputs"] = {{"fields", "fields.xmf"}, {"timeseries", "timeseries.csv"}};
+  io::writeSummaryJson((out / "summary.json").string(), summary);
+  spdlog::info("continuum: {} steps to t = {:.2f} s in {:.1f} s ({:.3g} cell-updates/s); wall "
+               "slip {} %; solids change {:.2e}; outputs in {}",
+               steps, solver.time(), loopSeconds, summary["cell_updates_per_second"].get<double>(),
+               slipSamples > 0 ? fmt::format("{:.1f}", 100.0 * slipSum / slipSamples) : "n/a",
+               (solver.solids() - solids0) / solids0, o.outputDirectory);
+  return 0;
+}
+
+} // namespace hikiln::cfd

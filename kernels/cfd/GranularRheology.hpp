@@ -1,0 +1,160 @@
+#pragma once
+/// \file GranularRheology.hpp
+/// \brief The viscous-plastic Drucker-Prager bed rheology with strain-rate dependent friction
+/// m(gamma_dot) (physics.md 3), the Newtonian gas, and their per-cell kernels (strain-rate
+/// invariant, mixture viscosity).
+///
+/// Convention (the DEM coarse-graining's, kernels/dem/CoarseGrainInvariants.hpp): compressive
+/// positive stress, p = sigma_ii / d, q = sqrt(s_ij s_ij / 2) of the deviator s, and the
+/// strain-rate invariant gamma_dot = sqrt(2 D':D') (D' the deviator of D). With s = 2 eta D' this
+/// gives q = eta gamma_dot, so eta = m p / gamma_dot puts every flowing cell on the yield surface
+/// q = m p, and in simple shear tau / sigma_n = q / p = m = tan(phi).
+///
+/// Law: m(gamma_dot) = m0 + m1 gamma_dot (the calibration file's `rheology` section), i.e. a
+/// Bingham fluid with yield stress m0 p and plastic viscosity m1 p at given p;
+///   eta_bed = min(m(gamma_dot) p / max(gamma_dot, strainRateFloor), viscosityMax),
+/// regularised below strainRateFloor (a bi-viscous plug) and capped at viscosityMax; both are
+/// parameters (defaults 1e-3 1/s and 1e5 Pa s). Wall layer (cells cut by the shell):
+/// m = min(m(gamma_dot), muWall), so the shear stress the bed transmits across that layer does not
+/// exceed the Coulomb wall friction either (the friction itself is the capped wall drag of
+/// ProjectionKernels.hpp; measured alone, this cap changed the wall slip by < 2 %).
+/// Mixture: mu = muGas + (phi / phiMax) eta_bed (phi clamped to [0, phiMax]).
+
+#include "kernels/cfd/GhostFill.hpp"
+#include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/ViscousOperator.hpp"
+
+#include <Kokkos_Core.hpp>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace hikiln::cfd {
+
+/// \brief Parameters of the bed and gas rheology (see the file comment).
+struct GranularRheology {
+  double m0 = 0.5;               ///< friction m at zero strain rate [1]
+  double m1 = 0.0;               ///< dm / d gamma_dot [s] (m is floored at 0)
+  double strainRateFloor = 1e-3; ///< regularisation of gamma_dot -> 0 [1/s]
+  double viscosityMax = 1e5;     ///< cap of the bed viscosity [Pa s]
+  double muWall = 0.3;           ///< bed-shell Coulomb friction coefficient
+  double gasViscosity = 1.8e-5;  ///< Newtonian gas [Pa s]
+  double phiMax = 0.6;           ///< solids volume fraction of the settled bed
+
+  /// \brief m(gamma_dot), never negative.
+  KOKKOS_INLINE_FUNCTION double friction(double gammaDot) const {
+    return math::fmax(m0 + m1 * gammaDot, 0.0);
+  }
+  /// \brief Bed viscosity at bed pressure p and strain rate gammaDot (wall: Coulomb wall layer).
+  KOKKOS_INLINE_FUNCTION double bedViscosity(double p, double gammaDot, bool wall) const {
+    const double m = wall ? math::fmin(friction(gammaDot), muWall) : friction(gammaDot);
+    return math::fmin(m * math::fmax(p, 0.0) / math::fmax(gammaDot, strainRateFloor), viscosityMax);
+  }
+  /// \brief Mixture viscosity at solids fraction phi.
+  KOKKOS_INLINE_FUNCTION double mixtureViscosity(double phi, double p, double gammaDot,
+                                                 bool wall) const {
+    const double s = math::fmin(math::fmax(phi / phiMax, 0.0), 1.0);
+    return gasViscosity + s * bedViscosity(p, gammaDot, wall);
+  }
+  /// \brief Throws std::invalid_argument naming the first bad parameter (`who` prefixes it).
+  void validate(std::string const& who) const {
+    const auto fail = [&](char const* key, char const* why) {
+      throw std::invalid_argument(who + ": " + key + " " + why);
+    };
+    if (!(m0 >= 0.0))
+      fail("m0", "must be >= 0");
+    if (!std::isfinite(m1))
+      fail("m1", "must be finite");
+    if (!(strainRateFloor > 0.0))
+      fail("strain_rate_floor", "must be > 0");
+    if (!(viscosityMax > gasViscosity))
+      fail("viscosity_max", "must exceed the gas viscosity");
+    if (!(muWall >= 0.0))
+      fail("mu_wall", "must be >= 0");
+    if (!(gasViscosity > 0.0))
+      fail("gas_viscosity", "must be > 0");
+    if (!(phiMax > 0.0 && phiMax <= 1.0))
+      fail("phi_max", "must be in (0, 1]");
+  }
+};
+
+/// \brief gamma_dot = sqrt(2 D':D') per cell from MAC velocities whose ghosts are filled: normal
+/// rates from the two faces of the cell, shear rates as the mean of the four cell edges around
+/// it along each pair of axes (2D: D' = D - tr(D) I / 2, 3D: - tr(D) I / 3).
+template <class ExecutionSpace, class MemorySpace>
+void strainRateInvariant(ExecutionSpace const& space, Grid const& grid,
+                         VelocityFields<MemorySpace> const& u, Field<MemorySpace> const& out) {
+  const int dims = grid.is3D() ? 3 : 2;
+  const int off[3] = {grid.ghost, grid.ghost, grid.ghostZ()};
+  const auto u0 = u.comp[0], u1 = u.comp[1], u2 = dims == 3 ? u.comp[2] : u.comp[0];
+  Kokkos::parallel_for(
+      "hikiln::cfd::strainRateInvariant", gridPolicy(space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+      KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        const auto comp = [&](int c) -> Field<MemorySpace> const& {
+          return c == 0 ? u0 : (c == 1 ? u1 : u2);
+        };
+        const auto at = [&](int c, int const(&p)[3]) {
+          return comp(c)(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
+        };
+        double d[3][3] = {};
+        for (int a = 0; a < dims; ++a) {
+          int p[3] = {i, j, k};
+          const double low = at(a, p);
+          p[a] += 1;
+          d[a][a] = (at(a, p) - low) / grid.spacing(a);
+        }
+        for (int a = 0; a < dims; ++a) {
+          for (int b = a + 1; b < dims; ++b) {
+            double sum = 0.0;
+            for (int sa = 0; sa < 2; ++sa) {
+              for (int sb = 0; sb < 2; ++sb) {
+                // edge at node (i_a + sa, i_b + sb): du_a/dx_b + du_b/dx_a
+                int p[3] = {i, j, k};
+                p[a] += sa;
+                p[b] += sb;
+                const double uaHigh = at(a, p);
+                p[b] -= 1;
+                const double uaLow = at(a, p);
+                p[b] += 1;
+                const double ubHigh = at(b, p);
+                p[a] -= 1;
+                const double ubLow = at(b, p);
+                sum += (uaHigh - uaLow) / grid.spacing(b) + (ubHigh - ubLow) / grid.spacing(a);
+              }
+            }
+            d[a][b] = d[b][a] = 0.125 * sum;
+          }
+        }
+        double trace = 0.0;
+        for (int a = 0; a < dims; ++a) {
+          trace += d[a][a];
+        }
+        double dd = 0.0;
+        for (int a = 0; a < dims; ++a) {
+          for (int b = 0; b < dims; ++b) {
+            const double dev = d[a][b] - (a == b ? trace / dims : 0.0);
+            dd += dev * dev;
+          }
+        }
+        out(i + off[0], j + off[1], k + off[2]) = math::sqrt(2.0 * dd);
+      });
+}
+
+/// \brief mu = rheology.mixtureViscosity(phi, pBed, gammaDot, wallLayer > 0) per cell.
+template <class ExecutionSpace, class MemorySpace>
+void mixtureViscosity(ExecutionSpace const& space, Grid const& grid,
+                      GranularRheology const& rheology, Field<MemorySpace> const& phi,
+                      Field<MemorySpace> const& pBed, Field<MemorySpace> const& gammaDot,
+                      Field<MemorySpace> const& wallLayer, Field<MemorySpace> const& mu) {
+  const int g = grid.ghost, gz = grid.ghostZ();
+  Kokkos::parallel_for(
+      "hikiln::cfd::mixtureViscosity", gridPolicy(space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+      KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        const int I = i + g, J = j + g, K = k + gz;
+        mu(I, J, K) = rheology.mixtureViscosity(phi(I, J, K), pBed(I, J, K), gammaDot(I, J, K),
+                                                wallLayer(I, J, K) > 0.0);
+      });
+}
+
+} // namespace hikiln::cfd

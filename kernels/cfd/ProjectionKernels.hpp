@@ -1,0 +1,330 @@
+#pragma once
+/// \file ProjectionKernels.hpp
+/// \brief Per-cell and per-face kernels of the two-phase projection step on cut cells (see
+/// solvers/cfd/TwoPhaseSolver.hpp): mixture and face densities, the momentum predictor's
+/// coefficients and right-hand side (upwind advection, gravity, old pressure gradient, Brinkman
+/// wall forcing), the aperture-weighted divergence, the pressure coefficients and the velocity
+/// correction, and the granular (bed) pressure.
+///
+/// Faces of axis a between cells L (below) and R (above); pressure gradients (p_R - p_L) / h_a
+/// only through open faces (aperture > 0); at a closed face the wall forcing holds the velocity.
+
+#include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/ShellGeometry.hpp"
+#include "kernels/cfd/ViscousOperator.hpp"
+
+#include <Kokkos_Core.hpp>
+
+namespace hikiln::cfd {
+
+/// \brief rho = phi rhoSolid + (1 - phi) rhoGas per cell.
+template <class ExecutionSpace, class MemorySpace>
+void mixtureDensity(ExecutionSpace const& space, Grid const& grid, double rhoSolid, double rhoGas,
+                    Field<MemorySpace> const& phi, Field<MemorySpace> const& rho) {
+  const int g = grid.ghost, gz = grid.ghostZ();
+  Kokkos::parallel_for(
+      "hikiln::cfd::mixtureDensity", gridPolicy(space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+      KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        const double f = phi(i + g, j + g, k + gz);
+        rho(i + g, j + g, k + gz) = f * rhoSolid + (1.0 - f) * rhoGas;
+      });
+}
+
+/// \brief The two cells beside face `face` along an axis of n cells (wrapped when periodic,
+/// clamped otherwise).
+KOKKOS_INLINE_FUNCTION void cellsBesideFace(int face, int n, bool periodic, int& below,
+                                            int& above) {
+  below = face - 1;
+  above = face;
+  if (periodic) {
+    below = below < 0 ? n - 1 : below;
+    above = above >= n ? 0 : above;
+  } else {
+    below = below < 0 ? 0 : below;
+    above = above >= n ? n - 1 : above;
+  }
+}
+
+/// \brief Face densities (arithmetic mean of the two cells) on every face of every axis.
+template <class ExecutionSpace, class MemorySpace>
+void faceDensities(ExecutionSpace const& space, Grid const& grid, bool const (&periodic)[3],
+                   Field<MemorySpace> const& rho, Field<MemorySpace> const (&rhoFace)[3]) {
+  const int g = grid.ghost, gz = grid.ghostZ();
+  for (int a = 0; a < (grid.is3D() ? 3 : 2); ++a) {
+    const auto out = rhoFace[a];
+    const int n = grid.cells(a);
+    const bool per = periodic[a];
+    const int hi[3] = {grid.nx + (a == 0), grid.ny + (a == 1), grid.nz + (a == 2)};
+    Kokkos::parallel_for(
+        "hikiln::cfd::faceDensities", gridPolicy(space, {0, 0, 0}, hi),
+        KOKKOS_LAMBDA(const int i, const int j, const int k) {
+          int idx[3] = {i, j, k};
+          int below, above;
+          cellsBesideFace(idx[a], n, per, below, above);
+          idx[a] = below;
+          const double rb = rho(idx[0] + g, idx[1] + g, idx[2] + gz);
+          idx[a] = above;
+          const double ra = rho(idx[0] + g, idx[1] + g, idx[2] + gz);
+          out(i + g, j + g, k + gz) = 0.5 * (rb + ra);
+        });
+  }
+}
+
+/// \brief Coulomb friction of the bed on the shell, applied on the cut faces.
+struct WallFriction {
+  bool enabled = false;
+  double muWall = 0.0;
+  double slipFloor = 1e-3; ///< m/s: regularises the drag at zero slip (stick below)
+};
+
+/// \brief Coefficients of the momentum predictor of component c on its faces:
+///   alpha = rho_f / dt + K (1 - aperture),
+///   rhs = rho_f (u / dt - (u . grad) u) [advection on open faces] + K (1 - aperture) u_wall,
+/// with first-order upwind advection (advecting velocities averaged to the face), u_wall at the
+/// centroid of the open part of the face, and the initial guess `guess` = u_wall on forced
+/// faces, u elsewhere. u's ghosts must be filled.
+/// K = penalty x (rho_f / dt + 2 d muMax / h_min^2) dominates inertia and viscous coupling.
+/// Gravity and pressure act in the projection (balanced on the same faces, see
+/// addGravity and correctVelocity).
+template <class ExecutionSpace, class MemorySpace, class Shape>
+void momentumPredictor(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
+                       Shape const& shape, int c, VelocityFields<MemorySpace> const& u,
+                       Field<MemorySpace> const& rhoFace, double dt, double penalty, double muMax,
+                       WallFriction const& friction, Field<MemorySpace> const& pBed,
+                       Field<MemorySpace> const& alpha, Field<MemorySpace> const& rhs,
+                       Field<MemorySpace> const& guess) {
+  const Grid grid = cc.grid;
+  const int dims = grid.is3D() ? 3 : 2;
+  const int off[3] = {grid.ghost, grid.ghost, grid.ghostZ()};
+  const auto ap = cc.aperture[c];
+  const auto cx = cc.centroid[c][0], cy = cc.centroid[c][1], cz = cc.centroid[c][2];
+  const auto uc = u.comp[c];
+  const auto u0 = u.comp[0], u1 = u.comp[1], u2 = dims == 3 ? u.comp[2] : u.comp[0];
+  double hMin = grid.hx < grid.hy ? grid.hx : grid.hy;
+  hMin = dims == 3 && grid.hz < hMin ? grid.hz : hMin;
+  const double viscousScale = 2.0 * dims * muMax / (hMin * hMin);
+  const int hi[3] = {grid.nx + (c == 0), grid.ny + (c == 1), grid.nz + (c == 2)};
+  const double h = grid.spacing(c == 0 ? 1 : 0); // wall length per cut cell ~ a cell edge
+  Kokkos::parallel_for(
+      "hikiln::cfd::momentumPredictor", gridPolicy(space, {0, 0, 0}, hi),
+      KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        const int I = i + off[0], J = j + off[1], K = k + off[2];
+        const double open = ap(I, J, K);
+        const double rf = rhoFace(I, J, K);
+        const double wall = shape.wallVelocity(c, cx(I, J, K), cy(I, J, K), cz(I, J, K));
+        const double here = uc(I, J, K);
+        double forcing = penalty * (rf / dt + viscousScale) * (1.0 - open);
+        if (friction.enabled && open > 0.0 && open < 1.0) {
+          // Coulomb wall friction on the cut faces: the drag per unit volume reaches at most
+          // mu_wall sigma_n / h (sigma_n ~ the bed pressure beside the face)
+          int q[3] = {I, J, K};
+          q[c] -= 1;
+          const double sigma = math::fmax(pBed(I, J, K), pBed(q[0], q[1], q[2]));
+          const double slip = math::fmax(math::fabs(here - wall), friction.slipFloor);
+          forcing = math::fmin(forcing, friction.muWall * sigma / (h * slip));
+        }
+        alpha(I, J, K) = rf / dt + forcing;
+        double value = rf * here / dt + forcing * wall;
+        if (open > 0.0) {
+          const auto comp = [&](int b) -> Field<MemorySpace> const& {
+            return b == 0 ? u0 : (b == 1 ? u1 : u2);
+          };
+          double advection = 0.0;
+          for (int b = 0; b < dims; ++b) {
+            int q[3] = {I, J, K};
+            double vb;
+            if (b == c) {
+              vb = here;
+            } else {
+              // u_b at the four (b-node, c-cell) positions around this c-face
+              const auto& ub = comp(b);
+              int s[3] = {I, J, K};
+              vb = ub(s[0], s[1], s[2]);
+              s[b] += 1;
+              vb += ub(s[0], s[1], s[2]);
+              s[c] -= 1;
+              vb += ub(s[0], s[1], s[2]);
+              s[b] -= 1;
+              vb += ub(s[0], s[1], s[2]);
+              vb *= 0.25;
+            }
+            q[b] += vb >= 0.0 ? -1 : 1;
+            const double neighbour = uc(q[0], q[1], q[2]);
+            advection += vb * (vb >= 0.0 ? here - neighbour : neighbour - here) / grid.spacing(b);
+          }
+          value -= rf * advection;
+        }
+        rhs(I, J, K) = value;
+        guess(I, J, K) = open < 1.0 ? wall : here;
+      });
+}
+
+/// \brief u += dt g on the open faces of every axis (gravity enters with the pressure gradient
+/// of the projection, so a layered bed at rest is in exact discrete balance).
+template <class ExecutionSpace, class MemorySpace>
+void addGravity(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
+                double const (&gravity)[3], double dt, VelocityFields<MemorySpace> const& u) {
+  const Grid grid = cc.grid;
+  const int g = grid.ghost, gz = grid.ghostZ();
+  for (int a = 0; a < (grid.is3D() ? 3 : 2); ++a) {
+    const auto ap = cc.aperture[a];
+    const auto ua = u.comp[a];
+    const double dv = dt * gravity[a];
+    const int hi[3] = {grid.nx + (a == 0), grid.ny + (a == 1), grid.nz + (a == 2)};
+    Kokkos::parallel_for(
+        "hikiln::cfd::addGravity", gridPolicy(space, {0, 0, 0}, hi),
+        KOKKOS_LAMBDA(const int i, const int j, const int k) {
+          if (ap(i + g, j + g, k + gz) > 0.0) {
+            ua(i + g, j + g, k + gz) += dv;
+          }
+        });
+  }
+}
+
+/// \brief div = sum over axes of (aperture u)(high face) - (aperture u)(low face), over h.
+template <class ExecutionSpace, class MemorySpace>
+void apertureDivergence(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
+                        VelocityFields<MemorySpace> const& u, Field<MemorySpace> const& div) {
+  const Grid grid = cc.grid;
+  const int dims = grid.is3D() ? 3 : 2;
+  const int g = grid.ghost, gz = grid.ghostZ();
+  const auto a0 = cc.aperture[0], a1 = cc.aperture[1], a2 = cc.aperture[2];
+  const auto u0 = u.comp[0], u1 = u.comp[1], u2 = dims == 3 ? u.comp[2] : u.comp[0];
+  Kokkos::parallel_for(
+      "hikiln::cfd::apertureDivergence", gridPolicy(space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+      KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        const int I = i + g, J = j + g, K = k + gz;
+        double d = (a0(I + 1, J, K) * u0(I + 1, J, K) - a0(I, J, K) * u0(I, J, K)) / grid.hx +
+                   (a1(I, J + 1, K) * u1(I, J + 1, K) - a1(I, J, K) * u1(I, J, K)) / grid.hy;
+        if (dims == 3) {
+          d += (a2(I, J, K + 1) * u2(I, J, K + 1) - a2(I, J, K) * u2(I, J, K)) / grid.hz;
+        }
+        div(I, J, K) = d;
+      });
+}
+
+/// \brief Pressure-equation coefficients: beta = aperture / rho_f on the faces, and alpha in
+/// cells = `removedAlpha` in solid cells (no open face, capacity 0: decoupled, pressure 0), 0 in
+/// fluid ones.
+template <class ExecutionSpace, class MemorySpace>
+void pressureCoefficients(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
+                          Field<MemorySpace> const (&rhoFace)[3], double removedAlpha,
+                          Field<MemorySpace> const& alpha, Field<MemorySpace> const (&beta)[3]) {
+  const Grid grid = cc.grid;
+  const int g = grid.ghost, gz = grid.ghostZ();
+  for (int a = 0; a < (grid.is3D() ? 3 : 2); ++a) {
+    const auto ap = cc.aperture[a];
+    const auto rf = rhoFace[a];
+    const auto b = beta[a];
+    const int hi[3] = {grid.nx + (a == 0), grid.ny + (a == 1), grid.nz + (a == 2)};
+    Kokkos::parallel_for(
+        "hikiln::cfd::pressureBeta", gridPolicy(space, {0, 0, 0}, hi),
+        KOKKOS_LAMBDA(const int i, const int j, const int k) {
+          b(i + g, j + g, k + gz) = ap(i + g, j + g, k + gz) / rf(i + g, j + g, k + gz);
+        });
+  }
+  const auto vol = cc.capacity;
+  Kokkos::parallel_for(
+      "hikiln::cfd::pressureAlpha", gridPolicy(space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+      KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        alpha(i + g, j + g, k + gz) = vol(i + g, j + g, k + gz) > 0.0 ? 0.0 : removedAlpha;
+      });
+}
+
+/// \brief u -= dt / rho_f dq/dx on the open faces of every axis.
+template <class ExecutionSpace, class MemorySpace>
+void correctVelocity(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
+                     Field<MemorySpace> const (&rhoFace)[3], double dt, Field<MemorySpace> const& q,
+                     VelocityFields<MemorySpace> const& u) {
+  const Grid grid = cc.grid;
+  const int off[3] = {grid.ghost, grid.ghost, grid.ghostZ()};
+  for (int a = 0; a < (grid.is3D() ? 3 : 2); ++a) {
+    const auto ap = cc.aperture[a];
+    const auto rf = rhoFace[a];
+    const auto ua = u.comp[a];
+    const int n = grid.cells(a);
+    const double h = grid.spacing(a);
+    const int hi[3] = {grid.nx + (a == 0), grid.ny + (a == 1), grid.nz + (a == 2)};
+    Kokkos::parallel_for(
+        "hikiln::cfd::correctVelocity", gridPolicy(space, {0, 0, 0}, hi),
+        KOKKOS_LAMBDA(const int i, const int j, const int k) {
+          const int I = i + off[0], J = j + off[1], K = k + off[2];
+          if (ap(I, J, K) <= 0.0) {
+            return;
+          }
+          int idx[3] = {i, j, k};
+          int below, above;
+          cellsBesideFace(idx[a], n, true, below, above);
+          idx[a] = below;
+          const double qb = q(idx[0] + off[0], idx[1] + off[1], idx[2] + off[2]);
+          idx[a] = above;
+          const double qa = q(idx[0] + off[0], idx[1] + off[1], idx[2] + off[2]);
+          ua(I, J, K) -= dt / rf(I, J, K) * (qa - qb) / h;
+        });
+  }
+}
+
+/// \brief p - rho_gas g.x at a cell: constant through a gas at rest.
+template <class MemorySpace> struct GasHeadRemoved {
+  Grid grid;
+  Field<MemorySpace> p;
+  double rhoGas;
+  double gravity[3];
+  KOKKOS_INLINE_FUNCTION double operator()(int i, int j, int k) const {
+    const double x = grid.coordinate(Staggering::Cell, 0, i);
+    const double y = grid.coordinate(Staggering::Cell, 1, j);
+    const double z = grid.coordinate(Staggering::Cell, 2, k);
+    return p(i + grid.ghost, j + grid.ghost, k + grid.ghostZ()) -
+           rhoGas * (gravity[0] * x + gravity[1] * y + gravity[2] * z);
+  }
+};
+
+/// \brief The granular (bed) pressure p_bed = max(0, p - p_gas(x)), p_gas(x) = C + rho_gas g.x
+/// the gas pressure extrapolated hydrostatically through the bed, C = the mean of p - rho_gas g.x
+/// over the gas cells (phi <= gasPhi, fluid); without gas cells (a full drum) the smallest
+/// p - rho_gas g.x over fluid cells. So p_bed is gauge-free and 0 at the bed surface, the
+/// confining pressure of the grains (the mixture's total pressure less the gas pressure).
+/// Returns C.
+template <class ExecutionSpace, class MemorySpace>
+double bedPressure(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
+                   Field<MemorySpace> const& phi, Field<MemorySpace> const& p, double rhoGas,
+                   double const (&gravity)[3], double gasPhi, Field<MemorySpace> const& pBed) {
+  const Grid grid = cc.grid;
+  const int g = grid.ghost, gz = grid.ghostZ();
+  const auto vol = cc.capacity;
+  const double g0 = gravity[0], g1 = gravity[1], g2 = gravity[2];
+  const auto cells = gridPolicy(space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz});
+  const GasHeadRemoved<MemorySpace> reduced{grid, p, rhoGas, {g0, g1, g2}};
+  double sum = 0.0, count = 0.0, lowest = 0.0;
+  Kokkos::parallel_reduce(
+      "hikiln::cfd::gasReference", cells,
+      KOKKOS_LAMBDA(const int i, const int j, const int k, double& s, double& c) {
+        if (vol(i + g, j + g, k + gz) > 0.0 && phi(i + g, j + g, k + gz) <= gasPhi) {
+          s += reduced(i, j, k);
+          c += 1.0;
+        }
+      },
+      sum, count);
+  double reference = 0.0;
+  if (count > 0.0) {
+    reference = sum / count;
+  } else {
+    Kokkos::parallel_reduce(
+        "hikiln::cfd::lowestPressure", cells,
+        KOKKOS_LAMBDA(const int i, const int j, const int k, double& m) {
+          if (vol(i + g, j + g, k + gz) > 0.0) {
+            m = math::fmin(m, reduced(i, j, k));
+          }
+        },
+        Kokkos::Min<double>(lowest));
+    reference = lowest;
+  }
+  Kokkos::parallel_for(
+      "hikiln::cfd::bedPressure", cells, KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        pBed(i + g, j + g, k + gz) =
+            vol(i + g, j + g, k + gz) > 0.0 ? math::fmax(reduced(i, j, k) - reference, 0.0) : 0.0;
+      });
+  return reference;
+}
+
+} // namespace hikiln::cfd

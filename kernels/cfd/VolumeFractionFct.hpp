@@ -1,0 +1,281 @@
+#pragma once
+/// \file VolumeFractionFct.hpp
+/// \brief Conservative, bounded transport of the solids volume fraction phi by the mixture
+/// velocity on cut cells: multidimensional flux-corrected transport (Zalesak 1979).
+///
+/// Why FCT: the bed surface must stay sharp (a low-order upwind scheme smears it over the run)
+/// and phi must stay in [0, phiMax] (unlimited high-order schemes overshoot at a jump). FCT
+/// blends a bounded low-order flux (upwind) with a compressive high-order one face by face,
+/// limiting the antidiffusive difference so that no cell leaves the range of its own and its
+/// open neighbours' old and low-order values (and [0, phiMax]); the scheme stays in flux form, so
+/// the solids content sum(capacity x phi) changes only through the (zero) wall fluxes (capacity:
+/// the cell volume fraction, at least minVolume, ShellGeometry.hpp).
+/// Fluxes are aperture x face velocity (ShellGeometry.hpp). Bounds hold when the face fluxes
+/// are divergence-free (to the projection's tolerance) and the outflow of every cell per step
+/// is at most its fluid volume (see maxCourantRate).
+///
+/// Settling (drift flux): grains in the freeboard fall relative to the mixture at the hindered
+/// settling velocity w (1 - phi / phiMax) along gravity, so solids smeared above the bed surface
+/// (by the upwind part of the scheme) settle back onto it instead of forming a heavy "dusty gas"
+/// that the one-velocity mixture would convect violently. Its low-order flux through a face is
+/// w phi_from (1 - phi_to / phiMax) (from the cell above to the one below): monotone, zero out of
+/// an empty cell and into a full one, so a settled bed (phi = phiMax) and its surface are not
+/// changed. The gas displaced by the grains makes the volume flux of the mixture unchanged.
+
+#include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/ShellGeometry.hpp"
+#include "kernels/cfd/ViscousOperator.hpp"
+
+#include <Kokkos_Core.hpp>
+
+namespace hikiln::cfd {
+
+/// \brief Scratch fields of the FCT step.
+template <class MemorySpace> struct FctWork {
+  Field<MemorySpace> low[3];  ///< low-order face fluxes (per unit cell volume)
+  Field<MemorySpace> anti[3]; ///< antidiffusive face fluxes, then the limited ones
+  Field<MemorySpace> phiLow, rPlus, rMinus;
+};
+
+/// \brief Allocates the FCT scratch fields on grid.
+template <class ExecutionSpace>
+FctWork<typename ExecutionSpace::memory_space> makeFctWork(ExecutionSpace const& space,
+                                                           Grid const& grid) {
+  FctWork<typename ExecutionSpace::memory_space> w;
+  for (int a = 0; a < 3; ++a) {
+    w.low[a] = makeField(space, grid, faceStaggering(a), "hikiln::cfd::fct::low");
+    w.anti[a] = makeField(space, grid, faceStaggering(a), "hikiln::cfd::fct::anti");
+  }
+  w.phiLow = makeField(space, grid, Staggering::Cell, "hikiln::cfd::fct::phiLow");
+  w.rPlus = makeField(space, grid, Staggering::Cell, "hikiln::cfd::fct::rPlus");
+  w.rMinus = makeField(space, grid, Staggering::Cell, "hikiln::cfd::fct::rMinus");
+  return w;
+}
+
+/// \brief Largest rate (1/s) of (sum over faces of |aperture u| / h) / 2 + sum |settling| / h,
+/// over the capacity: a step dt keeps every cell's outflow below cfl x its capacity when
+/// dt <= cfl / rate (for divergence-free fluxes inflow equals outflow, hence the 2).
+template <class ExecutionSpace, class MemorySpace>
+double maxCourantRate(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
+                      VelocityFields<MemorySpace> const& u, double const (&settling)[3]) {
+  const Grid grid = cc.grid;
+  const int dims = grid.is3D() ? 3 : 2;
+  const int g = grid.ghost, gz = grid.ghostZ();
+  const auto vol = cc.capacity;
+  const auto a0 = cc.aperture[0], a1 = cc.aperture[1], a2 = cc.aperture[2];
+  const auto u0 = u.comp[0], u1 = u.comp[1], u2 = dims == 3 ? u.comp[2] : u.comp[0];
+  double rate = 0.0;
+  Kokkos::parallel_reduce(
+      "hikiln::cfd::maxCourantRate", gridPolicy(space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+      KOKKOS_LAMBDA(const int i, const int j, const int k, double& m) {
+        const int I = i + g, J = j + g, K = k + gz;
+        if (vol(I, J, K) <= 0.0) {
+          return;
+        }
+        double sum = (math::fabs(a0(I, J, K) * u0(I, J, K)) +
+                      math::fabs(a0(I + 1, J, K) * u0(I + 1, J, K))) /
+                         grid.hx +
+                     (math::fabs(a1(I, J, K) * u1(I, J, K)) +
+                      math::fabs(a1(I, J + 1, K) * u1(I, J + 1, K))) /
+                         grid.hy;
+        if (dims == 3) {
+          sum += (math::fabs(a2(I, J, K) * u2(I, J, K)) +
+                  math::fabs(a2(I, J, K + 1) * u2(I, J, K + 1))) /
+                 grid.hz;
+        }
+        // settling moves grains one way through at most one face per axis
+        double drift = math::fabs(settling[0]) / grid.hx + math::fabs(settling[1]) / grid.hy;
+        drift += dims == 3 ? math::fabs(settling[2]) / grid.hz : 0.0;
+        m = math::fmax(m, (0.5 * sum + drift) / vol(I, J, K));
+      },
+      Kokkos::Max<double>(rate));
+  return rate;
+}
+
+namespace detail {
+
+/// \brief Low-order (upwind, plus settling) and antidiffusive fluxes on the faces normal to
+/// axis, per unit cell volume and step: aperture u dt / h x face value. The high-order face
+/// value is phi_U + (1 - c)(phi_D - phi_U) (c the Courant number): twice the Lax-Wendroff
+/// antidiffusion, i.e. downwind-biased and compressive; the limiter keeps it bounded. Measured
+/// in a 32^2 drum at 6 rpm: it halves the cells holding solids traces (1e-6 < phi < 0.03)
+/// compared with Lax-Wendroff (27 vs 51 after 0.2 s).
+template <class ExecutionSpace, class MemorySpace>
+void fctFaceFluxes(ExecutionSpace const& space, CutCells<MemorySpace> const& cc, int axis,
+                   Field<MemorySpace> const& u, Field<MemorySpace> const& phi, double dt,
+                   double settling, double phiMax, Field<MemorySpace> const& low,
+                   Field<MemorySpace> const& anti) {
+  const Grid grid = cc.grid;
+  const int g = grid.ghost, gz = grid.ghostZ();
+  const auto ap = cc.aperture[axis];
+  const int n = grid.cells(axis);
+  const double h = grid.spacing(axis);
+  const int hi[3] = {grid.nx + (axis == 0), grid.ny + (axis == 1), grid.nz + (axis == 2)};
+  Kokkos::parallel_for(
+      "hikiln::cfd::fctFaceFluxes", gridPolicy(space, {0, 0, 0}, hi),
+      KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        const int I = i + g, J = j + g, K = k + gz;
+        const double open = ap(I, J, K);
+        if (open <= 0.0) {
+          low(I, J, K) = 0.0;
+          anti(I, J, K) = 0.0;
+          return;
+        }
+        // cells below and above the face (wrapped: an open boundary face is periodic)
+        int idx[3] = {i, j, k};
+        const int face = idx[axis];
+        idx[axis] = face - 1 < 0 ? n - 1 : face - 1;
+        const double below = phi(idx[0] + g, idx[1] + g, idx[2] + gz);
+        idx[axis] = face >= n ? 0 : face;
+        const double above = phi(idx[0] + g, idx[1] + g, idx[2] + gz);
+        const double vel = u(I, J, K);
+        const double up = vel >= 0.0 ? below : above;
+        const double down = vel >= 0.0 ? above : below;
+        const double courant = math::fabs(vel) * dt / h;
+        const double high = up + (1.0 - courant) * (down - up);
+        const double flux = open * vel * dt / h;
+        // drift: settling < 0 moves grains from the cell above to the one below
+        const double from = settling < 0.0 ? above : below;
+        const double to = settling < 0.0 ? below : above;
+        const double drift = open * settling * dt / h * from * math::fmax(1.0 - to / phiMax, 0.0);
+        low(I, J, K) = flux * up + drift;
+        anti(I, J, K) = flux * (high - up);
+      });
+}
+
+/// \brief Net outflow of cell (I, J, K) (storage indices) through its faces of the face fields f.
+template <class MemorySpace>
+KOKKOS_INLINE_FUNCTION double netOutflow(Field<MemorySpace> const& f0, Field<MemorySpace> const& f1,
+                                         Field<MemorySpace> const& f2, int dims, int I, int J,
+                                         int K) {
+  double net = f0(I + 1, J, K) - f0(I, J, K) + f1(I, J + 1, K) - f1(I, J, K);
+  if (dims == 3) {
+    net += f2(I, J, K + 1) - f2(I, J, K);
+  }
+  return net;
+}
+
+} // namespace detail
+
+/// \brief Advances phi by one FCT step of length dt with the face velocities u and the
+/// settling velocity vector `settling` (w along gravity; see the file comment); solid cells
+/// keep phi = 0.
+template <class ExecutionSpace, class MemorySpace>
+void transportVolumeFraction(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
+                             VelocityFields<MemorySpace> const& u, double const (&settling)[3],
+                             double dt, double phiMax, Field<MemorySpace> const& phi,
+                             FctWork<MemorySpace> const& w) {
+  const Grid grid = cc.grid;
+  const int dims = grid.is3D() ? 3 : 2;
+  const int g = grid.ghost, gz = grid.ghostZ();
+  for (int a = 0; a < dims; ++a) {
+    detail::fctFaceFluxes(space, cc, a, u.comp[a], phi, dt, settling[a], phiMax, w.low[a],
+                          w.anti[a]);
+  }
+  const auto vol = cc.capacity;
+  const auto l0 = w.low[0], l1 = w.low[1], l2 = dims == 3 ? w.low[2] : w.low[0];
+  const auto a0 = w.anti[0], a1 = w.anti[1], a2 = dims == 3 ? w.anti[2] : w.anti[0];
+  const auto ap0 = cc.aperture[0], ap1 = cc.aperture[1], ap2 = cc.aperture[2];
+  const auto phiLow = w.phiLow, rPlus = w.rPlus, rMinus = w.rMinus;
+  const auto cells = gridPolicy(space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz});
+  Kokkos::parallel_for(
+      "hikiln::cfd::fctLowOrder", cells, KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        const int I = i + g, J = j + g, K = k + gz;
+        const double v = vol(I, J, K);
+        phiLow(I, J, K) =
+            v > 0.0 ? phi(I, J, K) - detail::netOutflow(l0, l1, l2, dims, I, J, K) / v : 0.0;
+      });
+  const int n[3] = {grid.nx, grid.ny, grid.nz};
+  Kokkos::parallel_for(
+      "hikiln::cfd::fctLimiter", cells, KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        const int I = i + g, J = j + g, K = k + gz;
+        const double v = vol(I, J, K);
+        if (v <= 0.0) {
+          rPlus(I, J, K) = rMinus(I, J, K) = 0.0;
+          return;
+        }
+        double hiBound = math::fmax(phi(I, J, K), phiLow(I, J, K));
+        double loBound = math::fmin(phi(I, J, K), phiLow(I, J, K));
+        double inflow = 0.0, outflow = 0.0;
+        const int idx[3] = {i, j, k};
+        for (int a = 0; a < dims; ++a) {
+          auto const& apa = a == 0 ? ap0 : (a == 1 ? ap1 : ap2);
+          auto const& anti = a == 0 ? a0 : (a == 1 ? a1 : a2);
+          for (int side = 0; side < 2; ++side) {
+            int f[3] = {I, J, K};
+            f[a] += side;
+            if (apa(f[0], f[1], f[2]) <= 0.0) {
+              continue;
+            }
+            int nb[3] = {idx[0], idx[1], idx[2]};
+            nb[a] += side == 0 ? -1 : 1;
+            nb[a] = nb[a] < 0 ? n[a] - 1 : (nb[a] >= n[a] ? 0 : nb[a]);
+            const int NI = nb[0] + g, NJ = nb[1] + g, NK = nb[2] + gz;
+            hiBound = math::fmax(hiBound, math::fmax(phi(NI, NJ, NK), phiLow(NI, NJ, NK)));
+            loBound = math::fmin(loBound, math::fmin(phi(NI, NJ, NK), phiLow(NI, NJ, NK)));
+            // flux along +a: into this cell on its low face, out of it on its high face
+            const double into = side == 0 ? anti(f[0], f[1], f[2]) : -anti(f[0], f[1], f[2]);
+            inflow += math::fmax(into, 0.0);
+            outflow += math::fmax(-into, 0.0);
+          }
+        }
+        hiBound = math::fmin(hiBound, phiMax);
+        loBound = math::fmax(loBound, 0.0);
+        const double roomUp = math::fmax(v * (hiBound - phiLow(I, J, K)), 0.0);
+        const double roomDown = math::fmax(v * (phiLow(I, J, K) - loBound), 0.0);
+        rPlus(I, J, K) = inflow > 0.0 ? math::fmin(1.0, roomUp / inflow) : 0.0;
+        rMinus(I, J, K) = outflow > 0.0 ? math::fmin(1.0, roomDown / outflow) : 0.0;
+      });
+  for (int a = 0; a < dims; ++a) {
+    const auto anti = w.anti[a];
+    const int na = n[a];
+    const int hi[3] = {grid.nx + (a == 0), grid.ny + (a == 1), grid.nz + (a == 2)};
+    Kokkos::parallel_for(
+        "hikiln::cfd::fctCorrection", gridPolicy(space, {0, 0, 0}, hi),
+        KOKKOS_LAMBDA(const int i, const int j, const int k) {
+          const int I = i + g, J = j + g, K = k + gz;
+          const double flux = anti(I, J, K);
+          if (flux == 0.0) {
+            return;
+          }
+          int idx[3] = {i, j, k};
+          const int face = idx[a];
+          idx[a] = face - 1 < 0 ? na - 1 : face - 1;
+          const int B[3] = {idx[0] + g, idx[1] + g, idx[2] + gz};
+          idx[a] = face >= na ? 0 : face;
+          const int A[3] = {idx[0] + g, idx[1] + g, idx[2] + gz};
+          // positive flux goes from the cell below to the cell above
+          const double c = flux > 0.0
+                               ? math::fmin(rPlus(A[0], A[1], A[2]), rMinus(B[0], B[1], B[2]))
+                               : math::fmin(rPlus(B[0], B[1], B[2]), rMinus(A[0], A[1], A[2]));
+          anti(I, J, K) = c * flux;
+        });
+  }
+  Kokkos::parallel_for(
+      "hikiln::cfd::fctUpdate", cells, KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        const int I = i + g, J = j + g, K = k + gz;
+        const double v = vol(I, J, K);
+        phi(I, J, K) =
+            v > 0.0 ? phiLow(I, J, K) - detail::netOutflow(a0, a1, a2, dims, I, J, K) / v : 0.0;
+      });
+}
+
+/// \brief Solids content sum of capacity x phi over the cells (x
+/// the cell volume gives m^3).
+template <class ExecutionSpace, class MemorySpace>
+double solidsContent(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
+                     Field<MemorySpace> const& phi) {
+  const Grid grid = cc.grid;
+  const int g = grid.ghost, gz = grid.ghostZ();
+  const auto vol = cc.capacity;
+  double sum = 0.0;
+  Kokkos::parallel_reduce(
+      "hikiln::cfd::solidsContent", gridPolicy(space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+      KOKKOS_LAMBDA(const int i, const int j, const int k, double& s) {
+        s += vol(i + g, j + g, k + gz) * phi(i + g, j + g, k + gz);
+      },
+      sum);
+  return sum;
+}
+
+} // namespace hikiln::cfd

@@ -1,0 +1,476 @@
+#pragma once
+/// \file TwoPhaseSolver.hpp
+/// \brief One time step of the two-phase (gas + granular solids) continuum model in a rotating
+/// shell on cut cells: a mixture (one-velocity) model with the solids volume fraction phi as
+/// the phase indicator, and an incremental projection method.
+///
+/// Step n -> n + 1 (dt from stableTimeStep):
+/// 1. phi by flux-corrected transport with the divergence-free face velocities u^n
+///    (VolumeFractionFct.hpp): conservative to round-off, bounded in [0, phiMax], sharp surface.
+/// 2. rho = phi rhoSolid + (1 - phi) rhoGas in cells, arithmetic means on faces.
+/// 3. Rheology from u^n and p^n: gamma_dot per cell, the bed pressure p_bed (total pressure less
+///    the hydrostatic gas pressure, ProjectionKernels.hpp: gauge-free, 0 at the bed surface),
+///    mu = muGas + phi / phiMax eta(p_bed, gamma_dot) (GranularRheology.hpp; Coulomb wall layer).
+/// 4. Momentum predictor, viscous terms implicit (ViscousMultigrid, PCG):
+///    rho (u* - u^n) / dt = -rho (u^n . grad) u^n + div(mu (grad u* + grad u*^T))
+///    + Brinkman forcing to the shell velocity on faces that are not fully open.
+///    Bed viscosities of 1e3-1e5 Pa s therefore do not limit dt.
+/// 5. Projection (CellMultigrid, PCG) for the full pressure with gravity
+///    (non-incremental, balanced force): u** = u* + dt g, div(a / rho grad p) = div(a u**) / dt
+///    with a the face apertures, u^{n+1} = u** - dt / rho grad p on open faces. Gravity and the
+///    pressure gradient meet on the same faces with the same (new) face density, so a layered
+///    bed at rest stays exactly at rest; an incremental form (grad p^n in the predictor) was
+///    tried and abandoned: p^n balances the old density, and on a face that the bed has just
+///    left grad p^n / rho_gas accelerated the gas to metres per second. The aperture-weighted
+///    divergence of u^{n+1} is zero to the solver tolerance.
+/// 6. Energy (optional, EnergyKernels.hpp): the heat content rides on step 1's fluxes, then an
+///    implicit diffusion with the effective bed diffusivity (CellMultigrid, PCG).
+/// dt is the largest step whose outflow from every cell is at most `cfl` of its fluid volume
+/// (advection), capped by dtMax; the reason is returned with the step.
+
+#include "kernels/cfd/EnergyKernels.hpp"
+#include "kernels/cfd/FieldOps.hpp"
+#include "kernels/cfd/GhostFill.hpp"
+#include "kernels/cfd/GranularRheology.hpp"
+#include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/ProjectionKernels.hpp"
+#include "kernels/cfd/ShellGeometry.hpp"
+#include "kernels/cfd/VolumeFractionFct.hpp"
+#include "solvers/cfd/CellMultigrid.hpp"
+#include "solvers/cfd/SolveStats.hpp"
+#include "solvers/cfd/ViscousMultigrid.hpp"
+
+#include <Kokkos_Core.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace hikiln::cfd {
+
+/// \brief Physical and numerical parameters of the two-phase model.
+struct TwoPhaseParameters {
+  double solidDensity = 2500.0; ///< grain material density [kg/m3] (bed density phi x this)
+  double gasDensity = 1.2;      ///< [kg/m3]
+  double gravity[3] = {0.0, -9.81, 0.0};
+  GranularRheology rheology;
+  double constantBedViscosity = 0.0; ///< > 0: Newtonian bed of this viscosity (no rheology)
+  double cfl = 0.5;                  ///< outflow per step / cell fluid volume
+  double dtMax = 0.01;               ///< [s]
+  double penalty = 1e6;              ///< Brinkman forcing strength (multiple of the operator)
+  double gasPhi = 1e-3;              ///< cells with phi below this are gas (bed pressure)
+  double settlingVelocity = 0.5;     ///< grains falling through the gas [m/s] (drift flux)
+  bool coulombWall = true;           ///< Coulomb friction on the cut faces (else no-slip)
+  bool energy = false;               ///< solve the energy equation (temperature())
+  ThermalParameters thermal;
+  double pressureTolerance = 1e-11; ///< relative residual of the pressure solve
+  double viscousTolerance = 1e-9;   ///< relative residual of the momentum solve
+  int maxIterations = 200;
+
+  /// \brief Throws std::invalid_argument naming the first bad parameter.
+  void validate() const {
+    const std::string who = "hikiln::cfd::TwoPhaseParameters";
+    rheology.validate(who);
+    const auto fail = [&](char const* key, char const* why) {
+      throw std::invalid_argument(who + ": " + key + " " + why);
+    };
+    if (!(solidDensity > 0.0))
+      fail("solid_density", "must be > 0");
+    if (!(gasDensity > 0.0))
+      fail("gas_density", "must be > 0");
+    if (!(constantBedViscosity >= 0.0))
+      fail("constant_bed_viscosity", "must be >= 0");
+    if (!(cfl > 0.0 && cfl <= 1.0))
+      fail("cfl", "must be in (0, 1]");
+    if (!(dtMax > 0.0))
+      fail("dt_max", "must be > 0");
+    if (!(penalty >= 1.0))
+      fail("penalty", "must be >= 1");
+  }
+};
+
+/// \brief What one step did.
+struct TwoPhaseStepReport {
+  double dt = 0.0;
+  std::string limitedBy;     ///< "advection (CFL)" or "dt_max"
+  double solidsBefore = 0.0; ///< sum of capacity x phi before the step
+  double solidsAfter = 0.0;  ///< ... after it
+  SolveStats viscous, pressure, energy;
+  double heatBefore = 0.0;    ///< heat content before the step (energy on)
+  double heatAfter = 0.0;     ///< ... after it
+  double maxDivergence = 0.0; ///< max |aperture-weighted div u| after the projection [1/s]
+};
+
+/// \brief The two-phase continuum model in a shell (see the file comment).
+template <class ExecutionSpace, class Shape = DrumShell> class TwoPhaseSolver {
+public:
+  using memory_space = typename ExecutionSpace::memory_space;
+  using field_type = Field<memory_space>;
+  using velocity_type = VelocityFields<memory_space>;
+
+  /// \brief A solver on grid for the fluid inside shape, everything at rest, phi = 0, p = 0.
+  TwoPhaseSolver(ExecutionSpace const& space, Grid const& grid, Shape const& shape,
+                 TwoPhaseParameters const& params, CutCellOptions const& cutOptions = {})
+      : _space(space), _grid(grid), _shape(shape), _params(params) {
+    params.validate();
+    for (int a = 0; a < 3; ++a) {
+      _periodic[a] = cutOptions.periodic[a] || (a == 2 && !grid.is3D());
+    }
+    CutCellOptions options = cutOptions;
+    options.periodic[2] = _periodic[2];
+    _cut = buildCutCells(space, grid, shape, options);
+    for (int side = 0; side < 6; ++side) {
+      const bool per = _periodic[side / 2];
+      _pressureBc.kind[side] = per ? BoundaryKind::Periodic : BoundaryKind::Wall;
+      _velocityBc.kind[side] = per ? BoundaryKind::Periodic : BoundaryKind::Wall;
+    }
+    const auto cellField = [&](char const* label) {
+      return makeField(space, grid, Staggering::Cell, label);
+    };
+    _phi = cellField("hikiln::cfd::phi");
+    _p = cellField("hikiln::cfd::p");
+    _pBed = cellField("hikiln::cfd::pBed");
+    _rho = cellField("hikiln::cfd::rho");
+    _mu = cellField("hikiln::cfd::mu");
+    _gammaDot = cellField("hikiln::cfd::gammaDot");
+    _div = cellField("hikiln::cfd::div");
+    _pAlpha = cellField("hikiln::cfd::pAlpha");
+    if (params.energy) {
+      _T = cellField("hikiln::cfd::T");
+      _Tstar = cellField("hikiln::cfd::Tstar");
+      _phiOld = cellField("hikiln::cfd::phiOld");
+      _kappa = cellField("hikiln::cfd::kappa");
+      _tAlpha = cellField("hikiln::cfd::tAlpha");
+      _tRhs = cellField("hikiln::cfd::tRhs");
+      for (int a = 0; a < 3; ++a) {
+        _tBeta[a] = makeField(space, grid, faceStaggering(a), "hikiln::cfd::tBeta");
+      }
+    }
+    for (int a = 0; a < 3; ++a) {
+      const Staggering s = faceStaggering(a);
+      _u.comp[a] = makeField(space, grid, s, "hikiln::cfd::u");
+      _uStar.comp[a] = makeField(space, grid, s, "hikiln::cfd::uStar");
+      _rhs.comp[a] = makeField(space, grid, s, "hikiln::cfd::rhs");
+      _alpha[a] = makeField(space, grid, s, "hikiln::cfd::alpha");
+      _rhoFace[a] = makeField(space, grid, s, "hikiln::cfd::rhoFace");
+      _beta[a] = makeField(space, grid, s, "hikiln::cfd::beta");
+    }
+    _fct = makeFctWork(space, grid);
+    for (int a = 0; a < 3; ++a) {
+      _cells.lo[a] = 0;
+      _cells.hi[a] = grid.cells(a);
+    }
+    _cells.offsets = ghostOffsets(grid);
+  }
+
+  /// \brief Sets phi = phiMax x the fraction of each fluid cell below the plane y = level (a flat
+  /// bed at rest), u = 0 and p to the hydrostatic pressure of that bed.
+  void setFlatBed(double level) {
+    const Grid grid = _grid;
+    const int g = grid.ghost, gz = grid.ghostZ();
+    const double phiMax = _params.rheology.phiMax;
+    const auto vol = _cut.capacity;
+    const auto phi = _phi;
+    Kokkos::parallel_for(
+        "hikiln::cfd::setFlatBed", gridPolicy(_space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+        KOKKOS_LAMBDA(const int i, const int j, const int k) {
+          const double y0 = grid.y0 + j * grid.hy;
+          const double below = math::fmin(math::fmax((level - y0) / grid.hy, 0.0), 1.0);
+          phi(i + g, j + g, k + gz) = vol(i + g, j + g, k + gz) > 0.0 ? phiMax * below : 0.0;
+        });
+    for (int a = 0; a < 3; ++a) {
+      Kokkos::deep_copy(_space, _u.comp[a], 0.0);
+    }
+    hydrostaticPressure();
+  }
+
+  /// \brief Sets phi = phiMax in every fluid cell (a full drum), u = 0, hydrostatic p.
+  void setFull() { setFlatBed(_grid.y0 + 2.0 * _grid.ny * _grid.hy); }
+
+  /// \brief p such that the gravity g - grad p / rho is discretely divergence-free (a projection
+  /// of gravity; exactly hydrostatic for a layered density).
+  void hydrostaticPressure() {
+    updateDensity();
+    for (int c = 0; c < dims(); ++c) {
+      Kokkos::deep_copy(_space, _uStar.comp[c], 0.0);
+    }
+    addGravity(_space, _cut, _params.gravity, 1.0, _uStar);
+    Kokkos::deep_copy(_space, _p, 0.0);
+    project(1.0, _uStar, _p);
+  }
+
+  /// \brief The largest stable step and what limits it.
+  double stableTimeStep(std::string& reason) {
+    const double rate = maxCourantRate(_space, _cut, _u, settling().v);
+    const double advective = rate > 0.0 ? _params.cfl / rate : _params.dtMax;
+    if (advective < _params.dtMax) {
+      reason = "advection (CFL)";
+      return advective;
+    }
+    reason = "dt_max";
+    return _params.dtMax;
+  }
+
+  /// \brief One step of the stable length.
+  TwoPhaseStepReport advance() {
+    std::string reason;
+    const double dt = stableTimeStep(reason);
+    TwoPhaseStepReport report = step(dt);
+    report.limitedBy = reason;
+    return report;
+  }
+
+  /// \brief One step of length dt (see the file comment).
+  TwoPhaseStepReport step(double dt) {
+    TwoPhaseStepReport report;
+    report.dt = dt;
+    report.limitedBy = "given";
+    const RheologyView rh = rheologyView();
+    report.solidsBefore = solidsContent(_space, _cut, _phi);
+    if (_params.energy) {
+      report.heatBefore = heat();
+      Kokkos::deep_copy(_space, _phiOld, _phi);
+    }
+    transportVolumeFraction(_space, _cut, _u, settling().v, dt, rh.phiMax, _phi, _fct);
+    report.solidsAfter = solidsContent(_space, _cut, _phi);
+    if (_params.energy) {
+      report.energy = energyStep(dt);
+      report.heatAfter = heat();
+    }
+    updateDensity();
+    updateViscosity();
+    // momentum predictor with implicit viscosity
+    for (int c = 0; c < dims(); ++c) {
+      fillGhostsVelocity(_space, _grid, _velocityBc, c, _u.comp[c]);
+    }
+    const double muMax = maxAbsUnknowns(_space, _cells, _mu);
+    WallFriction friction;
+    friction.enabled = _params.coulombWall && _params.constantBedViscosity == 0.0;
+    friction.muWall = _params.rheology.muWall;
+    for (int c = 0; c < dims(); ++c) {
+      momentumPredictor(_space, _cut, _shape, c, _u, _rhoFace[c], dt, _params.penalty, muMax,
+                        friction, _pBed, _alpha[c], _rhs.comp[c], _uStar.comp[c]);
+    }
+    MultigridOptions vopt;
+    vopt.tolerance = _params.viscousTolerance;
+    vopt.maxIterations = _params.maxIterations;
+    ViscousMultigrid<ExecutionSpace> viscous(_space, _grid, _velocityBc, _alpha, _mu, vopt);
+    report.viscous = viscous.solvePcg(_uStar, _rhs);
+    if (!report.viscous.converged) {
+      throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: momentum solve did not converge (" +
+                               std::to_string(report.viscous.iterations) + " iterations)");
+    }
+    addGravity(_space, _cut, _params.gravity, dt, _uStar);
+    report.pressure = project(dt, _uStar, _p);
+    for (int c = 0; c < dims(); ++c) {
+      Kokkos::deep_copy(_space, _u.comp[c], _uStar.comp[c]);
+    }
+    apertureDivergence(_space, _cut, _u, _div);
+    report.maxDivergence = maxAbsUnknowns(_space, _cells, _div);
+    _time += dt;
+    return report;
+  }
+
+  /// \brief Heat content sum(capacity x C x T) (x cell volume = J); 0 without energy.
+  double heat() {
+    return _params.energy ? heatContent(_space, _cut, heatCapacities(), _phi, _T) : 0.0;
+  }
+  /// \brief The temperature field (empty without energy); fill it before stepping.
+  field_type const& temperature() const { return _T; }
+
+  /// \brief Solids content sum(capacity x phi) (x cell volume = m^3).
+  double solids() { return solidsContent(_space, _cut, _phi); }
+  /// \brief Wall slip as the DEM stage defines it (physics.md 2): 1 - (tangential bed speed at
+  /// the wall / shell speed), over the wall-layer cells holding bed (phi >= phiMax / 2), each at
+  /// its centre (velocity = mean of its faces) against omega r there, weighted by capacity x
+  /// phi. NaN when the shell does not turn or no bed touches it. Needs a DrumShell-like shape
+  /// (cx, cy, omega).
+  double wallSlip() {
+    if (_shape.omega == 0.0) {
+      return std::nan("");
+    }
+    const Grid grid = _grid;
+    const int g = grid.ghost, gz = grid.ghostZ();
+    const auto cap = _cut.capacity;
+    const auto wall = _cut.wallLayer;
+    const auto phi = _phi;
+    const auto u = _u.comp[0], v = _u.comp[1];
+    const double half = 0.5 * _params.rheology.phiMax;
+    const double cx = _shape.cx, cy = _shape.cy, omega = _shape.omega;
+    double sum = 0.0, weight = 0.0;
+    Kokkos::parallel_reduce(
+        "hikiln::cfd::wallSlip", gridPolicy(_space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+        KOKKOS_LAMBDA(const int i, const int j, const int k, double& s, double& w) {
+          const int I = i + g, J = j + g, K = k + gz;
+          if (wall(I, J, K) <= 0.0 || phi(I, J, K) < half) {
+            return;
+          }
+          const double x = grid.coordinate(Staggering::Cell, 0, i) - cx;
+          const double y = grid.coordinate(Staggering::Cell, 1, j) - cy;
+          const double r = math::sqrt(x * x + y * y);
+          const double uc = 0.5 * (u(I, J, K) + u(I + 1, J, K));
+          const double vc = 0.5 * (v(I, J, K) + v(I, J + 1, K));
+          const double bed = cap(I, J, K) * phi(I, J, K);
+          s += bed * (-y * uc + x * vc) / (r * omega * r);
+          w += bed;
+        },
+        sum, weight);
+    return weight > 0.0 ? 1.0 - sum / weight : std::nan("");
+  }
+
+  /// \brief Smallest and largest phi over fluid cells.
+  void phiRange(double& lo, double& hi) {
+    const Grid grid = _grid;
+    const int g = grid.ghost, gz = grid.ghostZ();
+    const auto vol = _cut.capacity;
+    const auto phi = _phi;
+    lo = 0.0;
+    hi = 0.0;
+    Kokkos::parallel_reduce(
+        "hikiln::cfd::phiRange", gridPolicy(_space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+        KOKKOS_LAMBDA(const int i, const int j, const int k, double& mn, double& mx) {
+          if (vol(i + g, j + g, k + gz) > 0.0) {
+            mn = math::fmin(mn, phi(i + g, j + g, k + gz));
+            mx = math::fmax(mx, phi(i + g, j + g, k + gz));
+          }
+        },
+        Kokkos::Min<double>(lo), Kokkos::Max<double>(hi));
+  }
+
+  int dims() const { return _grid.is3D() ? 3 : 2; }
+  double time() const { return _time; }
+  Grid const& grid() const { return _grid; }
+  Shape const& shape() const { return _shape; }
+  TwoPhaseParameters const& parameters() const { return _params; }
+  CutCells<memory_space> const& cutCells() const { return _cut; }
+  field_type const& volumeFraction() const { return _phi; }
+  field_type const& pressure() const { return _p; }
+  field_type const& bedPressureField() const { return _pBed; }
+  field_type const& viscosity() const { return _mu; }
+  field_type const& strainRate() const { return _gammaDot; }
+  field_type const& density() const { return _rho; }
+  velocity_type const& velocity() const { return _u; }
+
+private:
+  struct Settling {
+    double v[3] = {0.0, 0.0, 0.0};
+  };
+  struct RheologyView {
+    double phiMax;
+  };
+  RheologyView rheologyView() const { return RheologyView{_params.rheology.phiMax}; }
+
+  /// \brief The settling velocity vector: settlingVelocity along gravity.
+  Settling settling() const {
+    Settling s;
+    const double* g = _params.gravity;
+    const double norm = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    for (int a = 0; a < 3; ++a) {
+      s.v[a] = norm > 0.0 ? _params.settlingVelocity * g[a] / norm : 0.0;
+    }
+    return s;
+  }
+
+  HeatCapacities heatCapacities() const {
+    return HeatCapacities{_params.solidDensity * _params.thermal.solidHeatCapacity,
+                          _params.gasDensity * _params.thermal.gasHeatCapacity};
+  }
+
+  /// \brief Advects the heat with the fluxes of the volume-fraction step just taken (u^n) and
+  /// diffuses it implicitly.
+  SolveStats energyStep(double dt) {
+    const HeatCapacities heat = heatCapacities();
+    advectHeat(_space, _cut, _u, _fct, dt, heat, _phiOld, _phi, _T, _Tstar);
+    diffusionCoefficients(_space, _cut, _periodic, heat, _params.thermal, _params.rheology.phiMax,
+                          dt, _phi, _Tstar, _kappa, _tAlpha, _tBeta, _tRhs);
+    MultigridOptions topt;
+    topt.tolerance = _params.pressureTolerance;
+    topt.maxIterations = _params.maxIterations;
+    CellMultigrid<ExecutionSpace> mg(_space, _grid, _pressureBc, _tAlpha, _tBeta, topt);
+    Kokkos::deep_copy(_space, _T, _Tstar);
+    const SolveStats stats = mg.solvePcg(_T, _tRhs);
+    if (!stats.converged) {
+      throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: energy solve did not converge (" +
+                               std::to_string(stats.iterations) + " iterations)");
+    }
+    return stats;
+  }
+
+  void updateDensity() {
+    mixtureDensity(_space, _grid, _params.solidDensity, _params.gasDensity, _phi, _rho);
+    faceDensities(_space, _grid, _periodic, _rho, _rhoFace);
+  }
+
+  void updateViscosity() {
+    for (int c = 0; c < dims(); ++c) {
+      fillGhostsVelocity(_space, _grid, _velocityBc, c, _u.comp[c]);
+    }
+    strainRateInvariant(_space, _grid, _u, _gammaDot);
+    bedPressure(_space, _cut, _phi, _p, _params.gasDensity, _params.gravity, _params.gasPhi, _pBed);
+    GranularRheology rheology = _params.rheology;
+    if (_params.constantBedViscosity > 0.0) {
+      // a Newtonian bed: m p / max(gamma_dot, floor) with m = 0 replaced by a fixed viscosity
+      rheology.m0 = 0.0;
+      rheology.m1 = 0.0;
+    }
+    mixtureViscosity(_space, _grid, rheology, _phi, _pBed, _gammaDot, _cut.wallLayer, _mu);
+    if (_params.constantBedViscosity > 0.0) {
+      const Grid grid = _grid;
+      const int g = grid.ghost, gz = grid.ghostZ();
+      const double eta = _params.constantBedViscosity;
+      const double phiMax = rheology.phiMax;
+      const auto phi = _phi;
+      const auto mu = _mu;
+      Kokkos::parallel_for(
+          "hikiln::cfd::constantBedViscosity",
+          gridPolicy(_space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+          KOKKOS_LAMBDA(const int i, const int j, const int k) {
+            const double s = math::fmin(math::fmax(phi(i + g, j + g, k + gz) / phiMax, 0.0), 1.0);
+            mu(i + g, j + g, k + gz) += s * eta;
+          });
+    }
+  }
+
+  /// \brief Projects u (in place) with step dt; p becomes the pressure.
+  SolveStats project(double dt, velocity_type const& u, field_type const& p) {
+    // solid cells: any positive alpha decouples them; scale it like the fluid cells' diagonal
+    double hMin = std::min(_grid.hx, _grid.hy);
+    const double removedAlpha = 1.0 / (_params.solidDensity * hMin * hMin);
+    pressureCoefficients(_space, _cut, _rhoFace, removedAlpha, _pAlpha, _beta);
+    apertureDivergence(_space, _cut, u, _div);
+    axpbyUnknowns(_space, _cells, -1.0 / dt, _div, 0.0, _div);
+    MultigridOptions popt;
+    popt.tolerance = _params.pressureTolerance;
+    popt.maxIterations = _params.maxIterations;
+    CellMultigrid<ExecutionSpace> mg(_space, _grid, _pressureBc, _pAlpha, _beta, popt);
+    // a cold start: the stopping rule is relative to the initial residual, which a warm start
+    // from p^n makes so small that round-off stalls the iteration
+    Kokkos::deep_copy(_space, p, 0.0);
+    const SolveStats stats = mg.solvePcg(p, _div);
+    if (!stats.converged) {
+      throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: pressure solve did not converge (" +
+                               std::to_string(stats.iterations) + " iterations)");
+    }
+    correctVelocity(_space, _cut, _rhoFace, dt, p, u);
+    return stats;
+  }
+
+  ExecutionSpace _space;
+  Grid _grid;
+  Shape _shape;
+  TwoPhaseParameters _params;
+  bool _periodic[3] = {false, false, true};
+  CutCells<memory_space> _cut;
+  ScalarBoundaries _pressureBc;
+  VelocityBoundaries _velocityBc;
+  UnknownBox _cells;
+  field_type _phi, _p, _pBed, _rho, _mu, _gammaDot, _div, _pAlpha;
+  velocity_type _u, _uStar, _rhs;
+  field_type _alpha[3], _rhoFace[3], _beta[3];
+  FctWork<memory_space> _fct;
+  field_type _T, _Tstar, _phiOld, _kappa, _tAlpha, _tRhs, _tBeta[3];
+  double _time = 0.0;
+};
+
+} // namespace hikiln::cfd

@@ -1,0 +1,108 @@
+// The energy equation of the two-phase solver (kernels/cfd/EnergyKernels.hpp):
+// - a temperature step in a resting bed diffuses as the erf solution with diffusivity alphaEff;
+// - in a closed rotating drum with a hot and a cold half, the heat content is conserved per step
+//   to the solver tolerance and T stays within its initial range (maximum principle).
+#include "CfdTestUtils.hpp"
+#include "solvers/cfd/TwoPhaseSolver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+namespace {
+
+using namespace hikiln::cfd;
+using space = TEST_EXECSPACE;
+
+// Everything is fluid; walls only at the domain boundary.
+struct Everywhere {
+  KOKKOS_INLINE_FUNCTION bool inside(double, double, double) const { return true; }
+  KOKKOS_INLINE_FUNCTION double wallVelocity(int, double, double, double) const { return 0.0; }
+};
+
+template <class Solver> void setTemperature(Solver& solver, double cold, double hot) {
+  const Grid g = solver.grid();
+  auto T = Kokkos::create_mirror_view(Kokkos::HostSpace{}, solver.temperature());
+  Kokkos::deep_copy(T, 0.5 * (cold + hot));
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) {
+      T(i + g.ghost, j + g.ghost, 0) = g.coordinate(Staggering::Cell, 0, i) < 0.0 ? cold : hot;
+    }
+  }
+  Kokkos::deep_copy(solver.temperature(), T);
+}
+
+TEST(TEST_CATEGORY, energy_step_diffuses_as_erf) {
+  const Grid g = makeGrid(64, 4, 1, 2.0, 2.0 * 4 / 64, 1.0, -1.0, 0.0);
+  TwoPhaseParameters p;
+  p.gravity[1] = 0.0;
+  p.rheology.phiMax = 1.0; // phi = 1: no gas heat capacity or conduction in the bed
+  p.energy = true;
+  p.thermal.alphaEff = 1e-3;
+  p.dtMax = 0.1;
+  TwoPhaseSolver<space, Everywhere> solver(space{}, g, Everywhere{}, p);
+  solver.setFull();
+  const double cold = 300.0, hot = 700.0;
+  setTemperature(solver, cold, hot);
+  const double heat0 = solver.heat();
+  const double tEnd = 10.0;
+  while (solver.time() < tEnd - 1e-9) {
+    solver.step(std::min(p.dtMax, tEnd - solver.time()));
+  }
+  const auto T = test::toHost(solver.temperature());
+  double error = 0.0;
+  for (int i = 0; i < g.nx; ++i) {
+    const double x = g.coordinate(Staggering::Cell, 0, i);
+    const double exact =
+        0.5 * (cold + hot) + 0.5 * (hot - cold) * std::erf(x / (2.0 * std::sqrt(1e-3 * tEnd)));
+    error = std::max(error, std::fabs(T(i + g.ghost, 1 + g.ghost, 0) - exact));
+  }
+  std::cout << "erf profile: max error " << error / (hot - cold) << " of the step, heat change "
+            << std::fabs(solver.heat() - heat0) / heat0 << "\n";
+  // first order in time (dt = 0.1 s, 100 steps) and second order in space (h = 1/32)
+  EXPECT_LT(error, 0.004 * (hot - cold)); // measured 0.0023
+  EXPECT_LT(std::fabs(solver.heat() - heat0) / heat0, 1e-10);
+}
+
+TEST(TEST_CATEGORY, energy_conserved_in_rotating_drum) {
+  const Grid g = drumGrid(32, 1.0);
+  TwoPhaseParameters p;
+  p.rheology.phiMax = 0.6;
+  p.rheology.m0 = 0.5;
+  p.rheology.muWall = 0.35;
+  p.dtMax = 0.02;
+  p.energy = true;
+  p.thermal.alphaEff = 1e-4;
+  DrumShell shell;
+  shell.radius = 0.5;
+  shell.omega = 6.0 * 2.0 * hikiln::constants::pi / 60.0;
+  TwoPhaseSolver<space> solver(space{}, g, shell, p);
+  solver.setFlatBed(-0.1);
+  const double cold = 673.0, hot = 1073.0;
+  setTemperature(solver, cold, hot);
+  double worst = 0.0;
+  for (int n = 0; n < 20; ++n) {
+    const TwoPhaseStepReport r = solver.advance();
+    worst = std::max(worst, std::fabs(r.heatAfter - r.heatBefore) / r.heatBefore);
+  }
+  const auto T = test::toHost(solver.temperature());
+  const auto cap = test::toHost(solver.cutCells().capacity);
+  double lo = hot, hi = cold;
+  for (int j = 0; j < g.ny; ++j) {
+    for (int i = 0; i < g.nx; ++i) {
+      if (cap(i + g.ghost, j + g.ghost, 0) > 0.0) {
+        lo = std::min(lo, T(i + g.ghost, j + g.ghost, 0));
+        hi = std::max(hi, T(i + g.ghost, j + g.ghost, 0));
+      }
+    }
+  }
+  std::cout << "drum: worst relative heat change per step " << worst << ", T in [" << lo << ", "
+            << hi << "]\n";
+  EXPECT_LT(worst, 1e-10);
+  EXPECT_GE(lo, cold - 1e-6);
+  EXPECT_LE(hi, hot + 1e-6);
+  EXPECT_GT(hi - lo, 0.5 * (hot - cold)); // not mixed out in 0.4 s
+}
+
+} // namespace
