@@ -30,6 +30,12 @@ void addSweepCommand(CLI::App& app, Action& action);
 /// \brief `hikiln continuum CASE -o DIR`: the 2D two-phase continuum model of a drum.
 void addContinuumCommand(CLI::App& app, Action& action);
 
+/// \brief `hikiln compare DEM_RUN CONTINUUM_RUN... -o DIR`: DEM vs continuum (physics.md 5).
+void addCompareCommand(CLI::App& app, Action& action);
+
+/// \brief `hikiln fit-diffusivity DEM_RUN -o DIR` (drivers/fit/FitDiffusivity.hpp).
+void addFitDiffusivityCommand(CLI::App& app, Action& action);
+
 /// \brief `hikiln schema STAGE`: the case-file reference of a stage.
 void addSchemaCommand(CLI::App& app, Action& action);
 

@@ -2,6 +2,8 @@
 
 #include "solvers/calibration/RheologyFile.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
@@ -184,6 +186,22 @@ ContinuumSettings continuumSettingsFromCase(const cases::CaseFile& c) {
   p.thermal.gasConductivity = c.real("heat.gas_conductivity");
   p.validate();
   return s;
+}
+
+// The circular segment below height y has area R^2 (pi - acos(y / R)) + y sqrt(R^2 - y^2);
+// solved for y by bisection.
+double flatBedLevel(double R, double fill) {
+  const auto segment = [R](double y) { // area below the chord at height y
+    const double c = std::clamp(y / R, -1.0, 1.0);
+    return R * R * (constants::pi - std::acos(c)) + y * std::sqrt(std::max(R * R - y * y, 0.0));
+  };
+  const double target = fill * constants::pi * R * R;
+  double lo = -R, hi = R;
+  for (int it = 0; it < 200; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (segment(mid) < target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
 }
 
 } // namespace hikiln::cfd

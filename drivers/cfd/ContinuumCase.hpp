@@ -27,6 +27,10 @@ struct ContinuumSettings {
   double omega() const { return rpm * 2.0 * constants::pi / 60.0; }
 };
 
+/// \brief Height above the drum centre of a flat bed filling `fill` of a circle of radius R (the
+/// bed at rest at t = 0).
+double flatBedLevel(double R, double fill);
+
 /// \brief Schema of the `hikiln continuum` case file (physics.md 3, 5, 6.3).
 const cases::CaseSchema& continuumSchema();
 

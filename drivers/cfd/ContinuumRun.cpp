@@ -34,22 +34,6 @@ double secondsSince(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-/// Height above the drum centre of a flat bed filling `fill` of a circle of radius R: the
-/// circular segment below y has area R^2 acos(-y / R) + y sqrt(R^2 - y^2) ... solved by bisection.
-double bedLevel(double R, double fill) {
-  const auto segment = [R](double y) { // area below the chord at height y
-    const double c = std::clamp(y / R, -1.0, 1.0);
-    return R * R * (constants::pi - std::acos(c)) + y * std::sqrt(std::max(R * R - y * y, 0.0));
-  };
-  const double target = fill * constants::pi * R * R;
-  double lo = -R, hi = R;
-  for (int it = 0; it < 200; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    (segment(mid) < target ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
 /// Host copies of the cell fields of one output, [ny][nx] with x fastest.
 struct HostFields {
   std::map<std::string, std::vector<double>> scalars;
@@ -150,7 +134,7 @@ int runContinuum(ContinuumRunOptions const& o) {
   shell.radius = 0.5 * s.diameter;
   shell.omega = s.omega();
   Solver solver(Space{}, grid, shell, s.params);
-  solver.setFlatBed(bedLevel(shell.radius, s.fill));
+  solver.setFlatBed(flatBedLevel(shell.radius, s.fill));
   if (s.params.energy) {
     auto T = Kokkos::create_mirror_view(Kokkos::HostSpace{}, solver.temperature());
     Kokkos::deep_copy(T, 0.5 * (s.initialLeft + s.initialRight));

@@ -72,8 +72,11 @@ void DrumHeat::capacities(const DemSystem<Space>& system) {
   std::sort(_ids.begin(), _ids.end());
   const auto order = rowsOf(_ids, rowIds);
   _capacity.resize(order.size());
-  for (std::size_t r = 0; r < order.size(); ++r)
+  _inBed.resize(order.size());
+  for (std::size_t r = 0; r < order.size(); ++r) {
     _capacity[r] = host.mass(order[r]) * _settings.parameters.specificHeat;
+    _inBed[r] = isFree(host.kind(order[r])) ? 1 : 0;
+  }
 }
 
 void DrumHeat::start(const DemSystem<Space>& system, double time) {
@@ -137,23 +140,27 @@ BedHeatMeasures DrumHeat::measure() const {
   const ParticleTemperatures t = _heat->hostTemperatures();
   const auto order = rowsOf(_ids, t.id);
   BedHeatMeasures m;
-  double capacity = 0.0, sum = 0.0;
-  m.minTemperature = m.maxTemperature = t.mean.at(order.at(0));
+  double bedEnergy = 0.0, bedCapacity = 0.0, sum = 0.0, n = 0.0;
+  m.minTemperature = std::numeric_limits<double>::infinity();
+  m.maxTemperature = -m.minTemperature;
   for (std::size_t r = 0; r < order.size(); ++r) {
     const double ti = t.mean[order[r]];
     m.energy += _capacity[r] * ti;
-    capacity += _capacity[r];
+    if (!_inBed[r])
+      continue;
+    bedEnergy += _capacity[r] * ti;
+    bedCapacity += _capacity[r];
     sum += ti;
+    n += 1.0;
     m.minTemperature = std::min(m.minTemperature, ti);
     m.maxTemperature = std::max(m.maxTemperature, ti);
   }
-  const double n = static_cast<double>(order.size());
   double square = 0.0;
   for (std::size_t r = 0; r < order.size(); ++r) {
     const double d = t.mean[order[r]] - sum / n;
-    square += d * d;
+    square += _inBed[r] ? d * d : 0.0;
   }
-  m.meanTemperature = m.energy / capacity;
+  m.meanTemperature = bedEnergy / bedCapacity;
   m.stdTemperature = std::sqrt(square / n);
   m.environmentHeat = _settings.parameters.environmentExchange ? _heat->environmentHeat() : 0.0;
   if (_initialEnergy > 0.0)

@@ -10,7 +10,9 @@
 /// - Measures (heat_timeseries.csv, summary.json) are host sums over the particles in id order
 ///   of their mean temperatures, so they are bitwise the same for any thread count or particle
 ///   order: heat energy E = sum m c T_i, drift (E - environment heat - E_0) / E_0, and the mixing
-///   measure std(T_i) / std(T_i at the start) (unweighted over particles). The bed counts as
+///   measure std(T_i) / std(T_i at the start) (unweighted over particles). Energy sums every
+///   particle (glued shell discs exchange heat too); the mean, std, min and max describe the bed,
+///   the free particles only. The bed counts as
 ///   thermally equilibrated at the first sample with mixing below heat.equilibrium_threshold.
 /// - Temperatures written with a sample or snapshot are those of the last heat step (at most
 ///   step_every - 1 mechanical steps old).
@@ -93,6 +95,7 @@ private:
   std::unique_ptr<DemHeat<Space>> _heat;
   std::vector<std::int64_t> _ids; ///< particle ids, sorted
   std::vector<double> _capacity;  ///< m c of those particles (J/K)
+  std::vector<char> _inBed;       ///< 1 for free particles (not glued/fixed), same order
   std::int64_t _lastHeatStep = 0; ///< mechanical step of the last heat step
   double _initialEnergy = 0.0;    ///< E_0 (host sum, J)
   double _initialStd = 0.0;       ///< std of the particle temperatures at the start (K)

@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -87,6 +88,14 @@ void requireFinite(const DemSystem<Space>& system, const std::string& where) {
         "contact parameters; the last checkpoint in the output directory is intact",
         system.time(), where));
   }
+}
+
+/// Particle counts {"free", "fixed", "shell"} (ParticleKind) for summary.json.
+nlohmann::json particleKindCounts(const ParticleArrays<Kokkos::HostSpace>& host) {
+  std::int64_t counts[3] = {0, 0, 0};
+  for (std::size_t i = 0; i < host.count(); ++i)
+    ++counts[std::min<int>(host.kind(i), 2)];
+  return {{"free", counts[0]}, {"fixed", counts[1]}, {"shell", counts[2]}};
 }
 
 } // namespace
@@ -242,7 +251,8 @@ int runDrum(const DrumRunOptions& o) {
   summary["backend"] = app::defaultBackend();
   summary["threads"] = Space::concurrency();
   summary["restarted"] = o.restart;
-  summary["particles"] = system.size();
+  summary["particles"] = system.size(); // all discs, glued shell discs included
+  summary["particles_by_kind"] = particleKindCounts(system.hostParticles());
   summary["fill_requested"] = s.fill.fill;
   summary["fill_measured"] = fillMeasured;
   summary["bulk_solid_fraction"] = bulkFraction;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 
 namespace hikiln::dem {
@@ -14,7 +15,8 @@ std::vector<io::XdmfAttribute> snapshotAttributes() {
   return {{"velocity", "velocity", 2},
           {"angular_velocity", "angular_velocity", 1},
           {"radius", "radius", 1},
-          {"id", "id", 1, io::XdmfNumber::Int64}};
+          {"id", "id", 1, io::XdmfNumber::Int64},
+          {"kind", "kind", 1, io::XdmfNumber::UInt8}};
 }
 } // namespace
 
@@ -64,6 +66,7 @@ void ParticleSnapshots::write(std::int64_t step, double time,
   h5.setAttribute("/", "step", static_cast<std::int64_t>(step));
   std::vector<double> pos(2 * n), vel(2 * n), omega(n), radius(n);
   std::vector<std::int64_t> id(n);
+  std::vector<std::uint8_t> kind(n);
   for (std::size_t i = 0; i < n; ++i) {
     for (int d = 0; d < 2; ++d) {
       pos[2 * i + d] = p.position(i, d);
@@ -72,12 +75,14 @@ void ParticleSnapshots::write(std::int64_t step, double time,
     omega[i] = p.angularVelocity(i);
     radius[i] = p.radius(i);
     id[i] = p.id(i);
+    kind[i] = p.kind(i);
   }
   h5.writeDataset(g + "/position", pos, {n, 2}, "m");
   h5.writeDataset(g + "/velocity", vel, {n, 2}, "m/s");
   h5.writeDataset(g + "/angular_velocity", omega, {n}, "rad/s");
   h5.writeDataset(g + "/radius", radius, {n}, "m");
   h5.writeDataset(g + "/id", id, {n}, "1");
+  h5.writeDataset(g + "/kind", kind, {n}, "1"); // ParticleKind: 0 free, 1 fixed, 2 shell
   for (const ParticleField& f : extra)
     h5.writeDataset(g + "/" + f.name, f.values, {n}, f.unit);
   h5.commit();

@@ -38,8 +38,10 @@ std::string Progress::format(double simulatedTime, double endTime, double stepsP
 }
 
 void Progress::update(double simulatedTime, std::int64_t step) {
-  if (_firstStep < 0)
+  if (_firstStep < 0) {
     _firstStep = step;
+    _firstTime = simulatedTime;
+  }
   _lastTime = simulatedTime;
   _lastStep = step;
   const auto now = Clock::now();
@@ -49,8 +51,9 @@ void Progress::update(double simulatedTime, std::int64_t step) {
   _lastPrint = now;
   const double elapsed = std::chrono::duration<double>(now - _start).count();
   const double rate = elapsed > 0 ? static_cast<double>(step - _firstStep) / elapsed : 0.0;
-  const double eta =
-      simulatedTime > 0 ? elapsed * (_endTime - simulatedTime) / simulatedTime : -1.0;
+  // from the progress made by this process: a restarted run does not count the time before it
+  const double done = simulatedTime - _firstTime;
+  const double eta = done > 0 ? elapsed * (_endTime - simulatedTime) / done : -1.0;
   const std::string text = format(simulatedTime, _endTime, rate, eta);
   if (_terminal) {
     std::fprintf(stderr, "\r[%s] %s\x1b[K", _label.c_str(), text.c_str());

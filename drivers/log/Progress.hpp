@@ -39,6 +39,7 @@ private:
   double _lastTime = 0.0;
   std::int64_t _lastStep = 0;
   std::int64_t _firstStep = -1;
+  double _firstTime = 0.0; ///< simulated time at the first update (a restart starts late)
 };
 
 } // namespace hikiln::log

@@ -14,6 +14,8 @@
 #include "kernels/cfd/AxisClosure.hpp"
 #include "kernels/cfd/BoxSplit.hpp"
 #include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/SplitLoop.hpp"
+#include "kernels/cfd/StencilBodies.hpp"
 
 #include <Kokkos_Core.hpp>
 
@@ -85,38 +87,34 @@ template <class MemorySpace> BoxSplit cellSplit(CellOperator<MemorySpace> const&
   return splitUnknowns(op.grid, lo, hi);
 }
 
+namespace detail {
+
+/// The cell stencil at (i, j, k) of op applied to x (a stencil for StencilBodies.hpp).
+template <class MemorySpace> struct CellStencil {
+  using field_type = Field<MemorySpace>;
+  CellOperator<MemorySpace> op;
+  GridScales scale;
+  field_type x;
+  bool affine;
+  int ghost, ghostZ;
+  CellStencil(CellOperator<MemorySpace> const& o, field_type const& xIn, bool aff)
+      : op(o), scale(o.grid), x(xIn), affine(aff), ghost(o.grid.ghost), ghostZ(o.grid.ghostZ()) {}
+  template <bool Interior>
+  KOKKOS_INLINE_FUNCTION void stencil(int i, int j, int k, double& diag, double& rest) const {
+    cellStencil<Interior>(op, scale, x, i, j, k, affine, diag, rest);
+  }
+};
+
+} // namespace detail
+
 /// \brief y = A x on every cell (affine: with the boundary values).
 template <class ExecutionSpace, class MemorySpace>
 void applyCellOperator(ExecutionSpace const& space, CellOperator<MemorySpace> const& op,
                        Field<MemorySpace> const& x, Field<MemorySpace> const& y, bool affine) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::applyCellOperator: fields not accessible from the execution space");
-  const int g = op.grid.ghost;
-  const int gz = op.grid.ghostZ();
-  const BoxSplit split = cellSplit(op);
-  const GridScales scale(op.grid);
-  if (split.interiorSize() > 0) {
-    Kokkos::parallel_for(
-        "hikiln::cfd::applyCellOperator::interior",
-        gridPolicy(space, split.interiorLo, split.interiorHi),
-        KOKKOS_LAMBDA(const int i, const int j, const int k) {
-          double diag, rest;
-          cellStencil<true>(op, scale, x, i, j, k, affine, diag, rest);
-          y(i + g, j + g, k + gz) = diag * x(i + g, j + g, k + gz) - rest;
-        });
-  }
-  if (split.shellSize() > 0) {
-    Kokkos::parallel_for(
-        "hikiln::cfd::applyCellOperator::shell",
-        Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
-        KOKKOS_LAMBDA(const std::int64_t s) {
-          int i, j, k;
-          split.shellCell(s, i, j, k);
-          double diag, rest;
-          cellStencil<false>(op, scale, x, i, j, k, affine, diag, rest);
-          y(i + g, j + g, k + gz) = diag * x(i + g, j + g, k + gz) - rest;
-        });
-  }
+  forEachSplitCell(space, "hikiln::cfd::applyCellOperator", cellSplit(op),
+                   StencilApply<detail::CellStencil<MemorySpace>>{{op, x, affine}, y});
 }
 
 /// \brief r = f - A x on every cell.
@@ -126,34 +124,8 @@ void cellResidual(ExecutionSpace const& space, CellOperator<MemorySpace> const& 
                   Field<MemorySpace> const& r, bool affine) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::cellResidual: fields not accessible from the execution space");
-  const int g = op.grid.ghost;
-  const int gz = op.grid.ghostZ();
-  const BoxSplit split = cellSplit(op);
-  const GridScales scale(op.grid);
-  if (split.interiorSize() > 0) {
-    Kokkos::parallel_for(
-        "hikiln::cfd::cellResidual::interior",
-        gridPolicy(space, split.interiorLo, split.interiorHi),
-        KOKKOS_LAMBDA(const int i, const int j, const int k) {
-          double diag, rest;
-          cellStencil<true>(op, scale, x, i, j, k, affine, diag, rest);
-          r(i + g, j + g, k + gz) =
-              f(i + g, j + g, k + gz) - (diag * x(i + g, j + g, k + gz) - rest);
-        });
-  }
-  if (split.shellSize() > 0) {
-    Kokkos::parallel_for(
-        "hikiln::cfd::cellResidual::shell",
-        Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
-        KOKKOS_LAMBDA(const std::int64_t s) {
-          int i, j, k;
-          split.shellCell(s, i, j, k);
-          double diag, rest;
-          cellStencil<false>(op, scale, x, i, j, k, affine, diag, rest);
-          r(i + g, j + g, k + gz) =
-              f(i + g, j + g, k + gz) - (diag * x(i + g, j + g, k + gz) - rest);
-        });
-  }
+  forEachSplitCell(space, "hikiln::cfd::cellResidual", cellSplit(op),
+                   StencilResidual<detail::CellStencil<MemorySpace>>{{op, x, affine}, f, r});
 }
 
 /// \brief r = f - A x on every cell; returns the sum of r^2.
@@ -163,40 +135,9 @@ double cellResidualNorm2(ExecutionSpace const& space, CellOperator<MemorySpace> 
                          Field<MemorySpace> const& r, bool affine) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::cellResidualNorm2: fields not accessible from the execution space");
-  const int g = op.grid.ghost;
-  const int gz = op.grid.ghostZ();
-  const BoxSplit split = cellSplit(op);
-  const GridScales scale(op.grid);
-  double interior = 0.0, shell = 0.0;
-  if (split.interiorSize() > 0) {
-    Kokkos::parallel_reduce(
-        "hikiln::cfd::cellResidualNorm2::interior",
-        gridPolicy(space, split.interiorLo, split.interiorHi),
-        KOKKOS_LAMBDA(const int i, const int j, const int k, double& sum) {
-          double diag, rest;
-          cellStencil<true>(op, scale, x, i, j, k, affine, diag, rest);
-          const double res = f(i + g, j + g, k + gz) - (diag * x(i + g, j + g, k + gz) - rest);
-          r(i + g, j + g, k + gz) = res;
-          sum += res * res;
-        },
-        interior);
-  }
-  if (split.shellSize() > 0) {
-    Kokkos::parallel_reduce(
-        "hikiln::cfd::cellResidualNorm2::shell",
-        Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
-        KOKKOS_LAMBDA(const std::int64_t s, double& sum) {
-          int i, j, k;
-          split.shellCell(s, i, j, k);
-          double diag, rest;
-          cellStencil<false>(op, scale, x, i, j, k, affine, diag, rest);
-          const double res = f(i + g, j + g, k + gz) - (diag * x(i + g, j + g, k + gz) - rest);
-          r(i + g, j + g, k + gz) = res;
-          sum += res * res;
-        },
-        shell);
-  }
-  return interior + shell;
+  return sumOverSplitCells(
+      space, "hikiln::cfd::cellResidualNorm2", cellSplit(op),
+      StencilResidual<detail::CellStencil<MemorySpace>>{{op, x, affine}, f, r});
 }
 
 /// \brief One colour of a red-black Gauss-Seidel sweep for A x = f: every cell with
@@ -208,40 +149,8 @@ void smoothCellColour(ExecutionSpace const& space, CellOperator<MemorySpace> con
                       bool affine) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::smoothCellColour: fields not accessible from the execution space");
-  const int g = op.grid.ghost;
-  const int gz = op.grid.ghostZ();
-  const BoxSplit split = cellSplit(op);
-  const GridScales scale(op.grid);
-  const int i0 = split.interiorLo[0];
-  const int i1 = split.interiorHi[0];
-  if (split.interiorSize() > 0) {
-    Kokkos::parallel_for(
-        "hikiln::cfd::smoothCellColour::interior",
-        gridPolicy(space, {0, split.interiorLo[1], split.interiorLo[2]},
-                   {(i1 - i0 + 1) / 2, split.interiorHi[1], split.interiorHi[2]}),
-        KOKKOS_LAMBDA(const int pair, const int j, const int k) { // `half` is a CUDA type
-          const int i = i0 + 2 * pair + ((colour + i0 + j + k) & 1);
-          if (i < i1) {
-            double diag, rest;
-            cellStencil<true>(op, scale, x, i, j, k, affine, diag, rest);
-            x(i + g, j + g, k + gz) = (f(i + g, j + g, k + gz) + rest) / diag;
-          }
-        });
-  }
-  if (split.shellSize() > 0) {
-    Kokkos::parallel_for(
-        "hikiln::cfd::smoothCellColour::shell",
-        Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
-        KOKKOS_LAMBDA(const std::int64_t s) {
-          int i, j, k;
-          split.shellCell(s, i, j, k);
-          if (((i + j + k) & 1) == colour) {
-            double diag, rest;
-            cellStencil<false>(op, scale, x, i, j, k, affine, diag, rest);
-            x(i + g, j + g, k + gz) = (f(i + g, j + g, k + gz) + rest) / diag;
-          }
-        });
-  }
+  forEachSplitColourCell(space, "hikiln::cfd::smoothCellColour", cellSplit(op), colour,
+                         StencilGaussSeidel<detail::CellStencil<MemorySpace>>{{op, x, affine}, f});
 }
 
 /// \brief Harmonic mean 2 a b / (a + b) of two positive coefficients (0 if both are 0).

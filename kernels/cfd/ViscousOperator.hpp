@@ -17,6 +17,8 @@
 #include "kernels/cfd/AxisClosure.hpp"
 #include "kernels/cfd/BoxSplit.hpp"
 #include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/SplitLoop.hpp"
+#include "kernels/cfd/StencilBodies.hpp"
 
 #include <Kokkos_Core.hpp>
 
@@ -131,39 +133,34 @@ BoxSplit componentSplit(ViscousOperator<MemorySpace> const& op, int c) {
 
 namespace detail {
 
+/// The viscous stencil of component C at (i, j, k) of op applied to u (a stencil for
+/// StencilBodies.hpp; x is u.comp[C], the other components enter the coupling terms).
+template <int Dims, int C, class MemorySpace> struct ViscousStencil {
+  using field_type = Field<MemorySpace>;
+  ViscousOperator<MemorySpace> op;
+  GridScales scale;
+  VelocityFields<MemorySpace> u;
+  field_type x;
+  bool affine;
+  int ghost, ghostZ;
+  ViscousStencil(ViscousOperator<MemorySpace> const& o, VelocityFields<MemorySpace> const& uIn,
+                 bool aff)
+      : op(o), scale(o.grid), u(uIn), x(uIn.comp[C]), affine(aff), ghost(o.grid.ghost),
+        ghostZ(o.grid.ghostZ()) {}
+  template <bool Interior>
+  KOKKOS_INLINE_FUNCTION void stencil(int i, int j, int k, double& diag, double& rest) const {
+    viscousStencil<Interior, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
+  }
+};
+
 /// \brief out_C = (A u)_C (see applyViscousOperator).
 template <int Dims, int C, class ExecutionSpace, class MemorySpace>
 void applyViscousComponent(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
                            VelocityFields<MemorySpace> const& u,
                            VelocityFields<MemorySpace> const& out, bool affine) {
-  const int g = op.grid.ghost;
-  const int gz = op.grid.ghostZ();
-  const auto y = out.comp[C];
-  const auto x = u.comp[C];
-  const BoxSplit split = componentSplit(op, C);
-  const GridScales scale(op.grid);
-  if (split.interiorSize() > 0) {
-    Kokkos::parallel_for(
-        "hikiln::cfd::applyViscousOperator::interior",
-        gridPolicy(space, split.interiorLo, split.interiorHi),
-        KOKKOS_LAMBDA(const int i, const int j, const int k) {
-          double diag, rest;
-          viscousStencil<true, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
-          y(i + g, j + g, k + gz) = diag * x(i + g, j + g, k + gz) - rest;
-        });
-  }
-  if (split.shellSize() > 0) {
-    Kokkos::parallel_for(
-        "hikiln::cfd::applyViscousOperator::shell",
-        Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
-        KOKKOS_LAMBDA(const std::int64_t s) {
-          int i, j, k;
-          split.shellCell(s, i, j, k);
-          double diag, rest;
-          viscousStencil<false, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
-          y(i + g, j + g, k + gz) = diag * x(i + g, j + g, k + gz) - rest;
-        });
-  }
+  forEachSplitCell(
+      space, "hikiln::cfd::applyViscousOperator", componentSplit(op, C),
+      StencilApply<ViscousStencil<Dims, C, MemorySpace>>{{op, u, affine}, out.comp[C]});
 }
 
 /// \brief r_C = f_C - (A u)_C; returns the sum of r_C^2 (see viscousResidual).
@@ -172,43 +169,9 @@ double viscousResidualComponent(ExecutionSpace const& space, ViscousOperator<Mem
                                 VelocityFields<MemorySpace> const& u,
                                 VelocityFields<MemorySpace> const& f,
                                 VelocityFields<MemorySpace> const& r, bool affine) {
-  const int g = op.grid.ghost;
-  const int gz = op.grid.ghostZ();
-  const auto x = u.comp[C];
-  const auto rhs = f.comp[C];
-  const auto res = r.comp[C];
-  const BoxSplit split = componentSplit(op, C);
-  const GridScales scale(op.grid);
-  double interior = 0.0, shell = 0.0;
-  if (split.interiorSize() > 0) {
-    Kokkos::parallel_reduce(
-        "hikiln::cfd::viscousResidual::interior",
-        gridPolicy(space, split.interiorLo, split.interiorHi),
-        KOKKOS_LAMBDA(const int i, const int j, const int k, double& sum) {
-          double diag, rest;
-          viscousStencil<true, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
-          const double value = rhs(i + g, j + g, k + gz) - (diag * x(i + g, j + g, k + gz) - rest);
-          res(i + g, j + g, k + gz) = value;
-          sum += value * value;
-        },
-        interior);
-  }
-  if (split.shellSize() > 0) {
-    Kokkos::parallel_reduce(
-        "hikiln::cfd::viscousResidual::shell",
-        Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
-        KOKKOS_LAMBDA(const std::int64_t s, double& sum) {
-          int i, j, k;
-          split.shellCell(s, i, j, k);
-          double diag, rest;
-          viscousStencil<false, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
-          const double value = rhs(i + g, j + g, k + gz) - (diag * x(i + g, j + g, k + gz) - rest);
-          res(i + g, j + g, k + gz) = value;
-          sum += value * value;
-        },
-        shell);
-  }
-  return interior + shell;
+  return sumOverSplitCells(
+      space, "hikiln::cfd::viscousResidual", componentSplit(op, C),
+      StencilResidual<ViscousStencil<Dims, C, MemorySpace>>{{op, u, affine}, f.comp[C], r.comp[C]});
 }
 
 /// \brief One colour of the red-black sweep over component C (see smoothViscousColour).
@@ -216,42 +179,9 @@ template <int Dims, int C, class ExecutionSpace, class MemorySpace>
 void smoothViscousComponent(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
                             VelocityFields<MemorySpace> const& u,
                             VelocityFields<MemorySpace> const& f, int colour, bool affine) {
-  const int g = op.grid.ghost;
-  const int gz = op.grid.ghostZ();
-  const auto x = u.comp[C];
-  const auto rhs = f.comp[C];
-  const BoxSplit split = componentSplit(op, C);
-  const GridScales scale(op.grid);
-  const int i0 = split.interiorLo[0];
-  const int i1 = split.interiorHi[0];
-  if (split.interiorSize() > 0) {
-    Kokkos::parallel_for(
-        "hikiln::cfd::smoothViscousColour::interior",
-        gridPolicy(space, {0, split.interiorLo[1], split.interiorLo[2]},
-                   {(i1 - i0 + 1) / 2, split.interiorHi[1], split.interiorHi[2]}),
-        KOKKOS_LAMBDA(const int pair, const int j, const int k) { // `half` is a CUDA type
-          const int i = i0 + 2 * pair + ((colour + i0 + j + k) & 1);
-          if (i < i1) {
-            double diag, rest;
-            viscousStencil<true, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
-            x(i + g, j + g, k + gz) = (rhs(i + g, j + g, k + gz) + rest) / diag;
-          }
-        });
-  }
-  if (split.shellSize() > 0) {
-    Kokkos::parallel_for(
-        "hikiln::cfd::smoothViscousColour::shell",
-        Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
-        KOKKOS_LAMBDA(const std::int64_t s) {
-          int i, j, k;
-          split.shellCell(s, i, j, k);
-          if (((i + j + k) & 1) == colour) {
-            double diag, rest;
-            viscousStencil<false, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
-            x(i + g, j + g, k + gz) = (rhs(i + g, j + g, k + gz) + rest) / diag;
-          }
-        });
-  }
+  forEachSplitColourCell(
+      space, "hikiln::cfd::smoothViscousColour", componentSplit(op, C), colour,
+      StencilGaussSeidel<ViscousStencil<Dims, C, MemorySpace>>{{op, u, affine}, f.comp[C]});
 }
 
 } // namespace detail

@@ -51,6 +51,10 @@ template <class MemorySpace> struct NeighborList {
   Kokkos::View<double**, MemorySpace> normalForce;
   /// Optional (empty in lean lists): F_t of the slot along t from computeContactForces().
   Kokkos::View<double**, MemorySpace> tangentialForce;
+  /// Optional (empty unless allocateNormalAngle()): a second per-slot history, the last contact
+  /// normal or separating axis of a blocky pair (encoded as BlockyForceKernel.hpp says; 0: none),
+  /// carried over by the rebuild and copyNeighborRows() like shear; not by permuteContactRows().
+  Kokkos::View<double**, MemorySpace> normalAngle;
 
   NeighborList() = default;
   /// \brief Zero-filled list of `rows` rows with `capacity` slots each, including the optional
@@ -87,6 +91,13 @@ template <class MemorySpace> struct NeighborList {
         capacity());
   }
 
+  /// \brief Allocates normalAngle (zero-filled) to the list's shape.
+  template <class... Props> void allocateNormalAngle(Props const&... props) {
+    normalAngle = Kokkos::View<double**, MemorySpace>(
+        Kokkos::view_alloc(props..., std::string("hikiln::dem::nbrNormalAngle")), rows(),
+        capacity());
+  }
+
   /// \brief Slots per row (the row width).
   int capacity() const { return static_cast<int>(index.extent(1)); }
   /// \brief Number of rows allocated.
@@ -95,7 +106,7 @@ template <class MemorySpace> struct NeighborList {
   std::size_t bytes() const {
     return count.span() * sizeof(int) + index.span() * sizeof(int) + shear.span() * sizeof(double) +
            neighborId.span() * sizeof(std::int64_t) + normalForce.span() * sizeof(double) +
-           tangentialForce.span() * sizeof(double);
+           tangentialForce.span() * sizeof(double) + normalAngle.span() * sizeof(double);
   }
 
   /// \brief Throws unless 1 <= width <= maxNeighborCapacity.
@@ -129,6 +140,8 @@ int rebuildNeighborList(ExecutionSpace const& space, CellBins<MemorySpace> const
   auto shear = list.shear;
   auto nid = list.neighborId;
   const bool storeIds = nid.extent(0) >= n && nid.extent(1) == index.extent(1);
+  auto angle = list.normalAngle;
+  const bool carryAngle = angle.extent(0) >= n && angle.extent(1) == index.extent(1);
   const int width = list.capacity();
   int maxCount = 0;
   Kokkos::parallel_reduce(
@@ -139,6 +152,7 @@ int rebuildNeighborList(ExecutionSpace const& space, CellBins<MemorySpace> const
         int slotIndex[maxNeighborCapacity];
         std::int64_t slotId[maxNeighborCapacity];
         double slotShear[maxNeighborCapacity];
+        double slotAngle[maxNeighborCapacity];
         const double xi = position(i, 0);
         const double yi = position(i, 1);
         const double ri = radius(i);
@@ -199,13 +213,20 @@ int rebuildNeighborList(ExecutionSpace const& space, CellBins<MemorySpace> const
           while (o < oldCount && id(index(i, o)) < jid) {
             ++o;
           }
-          slotShear[k] = o < oldCount && index(i, o) == slotIndex[k] ? shear(i, o) : 0.0;
+          const bool kept = o < oldCount && index(i, o) == slotIndex[k];
+          slotShear[k] = kept ? shear(i, o) : 0.0;
+          if (carryAngle) {
+            slotAngle[k] = kept ? angle(i, o) : 0.0;
+          }
         }
         for (int k = 0; k < found; ++k) {
           index(i, k) = slotIndex[k];
           shear(i, k) = slotShear[k];
           if (storeIds) {
             nid(i, k) = slotId[k];
+          }
+          if (carryAngle) {
+            angle(i, k) = slotAngle[k];
           }
         }
         count(i) = found;
@@ -215,7 +236,8 @@ int rebuildNeighborList(ExecutionSpace const& space, CellBins<MemorySpace> const
 }
 
 /// \brief Copies rows [0, n) of `from` into `to` (count and the first count slots of index and
-/// shear; rows wider than `to` are truncated). For widening a list before a rebuild.
+/// shear, and of normalAngle where both have it; rows wider than `to` are truncated). For widening
+/// a list before a rebuild.
 template <class ExecutionSpace, class MemorySpace>
 void copyNeighborRows(ExecutionSpace const& space, std::size_t n,
                       NeighborList<MemorySpace> const& from, NeighborList<MemorySpace> const& to) {
@@ -224,6 +246,10 @@ void copyNeighborRows(ExecutionSpace const& space, std::size_t n,
   const int fromWidth = from.capacity();
   const int toWidth = to.capacity();
   const std::size_t fromRows = from.rows();
+  const bool copyAngle = from.normalAngle.extent(0) == fromRows &&
+                         from.normalAngle.extent(1) == from.index.extent(1) &&
+                         to.normalAngle.extent(0) == to.rows() &&
+                         to.normalAngle.extent(1) == to.index.extent(1);
   Kokkos::parallel_for(
       "hikiln::dem::copyNeighborRows", Kokkos::RangePolicy<ExecutionSpace>(space, 0, n),
       KOKKOS_LAMBDA(int i) {
@@ -233,6 +259,9 @@ void copyNeighborRows(ExecutionSpace const& space, std::size_t n,
         for (int k = 0; k < c; ++k) {
           to.index(i, k) = from.index(i, k);
           to.shear(i, k) = from.shear(i, k);
+          if (copyAngle) {
+            to.normalAngle(i, k) = from.normalAngle(i, k);
+          }
         }
         to.count(i) = c;
       });

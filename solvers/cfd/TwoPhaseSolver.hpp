@@ -46,6 +46,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace hikiln::cfd {
 
@@ -138,14 +139,7 @@ public:
     _pAlpha = cellField("hikiln::cfd::pAlpha");
     if (params.energy) {
       _T = cellField("hikiln::cfd::T");
-      _Tstar = cellField("hikiln::cfd::Tstar");
-      _phiOld = cellField("hikiln::cfd::phiOld");
-      _kappa = cellField("hikiln::cfd::kappa");
-      _tAlpha = cellField("hikiln::cfd::tAlpha");
-      _tRhs = cellField("hikiln::cfd::tRhs");
-      for (int a = 0; a < 3; ++a) {
-        _tBeta[a] = makeField(space, grid, faceStaggering(a), "hikiln::cfd::tBeta");
-      }
+      allocateHeatWork();
     }
     for (int a = 0; a < 3; ++a) {
       const Staggering s = faceStaggering(a);
@@ -230,13 +224,18 @@ public:
     report.solidsBefore = solidsContent(_space, _cut, _phi);
     if (_params.energy) {
       report.heatBefore = heat();
+    }
+    if (_phiOld.extent(0) > 0) {
       Kokkos::deep_copy(_space, _phiOld, _phi);
     }
     transportVolumeFraction(_space, _cut, _u, settling().v, dt, rh.phiMax, _phi, _fct);
     report.solidsAfter = solidsContent(_space, _cut, _phi);
     if (_params.energy) {
-      report.energy = energyStep(dt);
+      report.energy = energyStep(dt, _T, _params.thermal);
       report.heatAfter = heat();
+    }
+    for (TemperatureTracer const& tracer : _tracers) {
+      energyStep(dt, tracer.temperature, tracer.thermal);
     }
     updateDensity();
     updateViscosity();
@@ -278,6 +277,27 @@ public:
   }
   /// \brief The temperature field (empty without energy); fill it before stepping.
   field_type const& temperature() const { return _T; }
+
+  /// \brief Adds a passive temperature field with its own effective bed diffusivity, advected
+  /// and diffused every step exactly as temperature() is (the flow does not depend on it), and
+  /// returns its index. Many tracers share one flow computation: `hikiln fit-diffusivity` runs
+  /// all its candidate diffusivities in one continuum run. Fill it before stepping.
+  int addTemperatureTracer(double alphaEff) {
+    TemperatureTracer tracer;
+    tracer.thermal = _params.thermal;
+    tracer.thermal.alphaEff = alphaEff;
+    tracer.thermal.validate("hikiln::cfd::TwoPhaseSolver::addTemperatureTracer");
+    tracer.temperature = makeField(_space, _grid, Staggering::Cell, "hikiln::cfd::tracerT");
+    allocateHeatWork();
+    _tracers.push_back(tracer);
+    return static_cast<int>(_tracers.size()) - 1;
+  }
+  /// \brief Temperature field of tracer n (addTemperatureTracer).
+  field_type const& tracerTemperature(int n) const { return _tracers.at(n).temperature; }
+  /// \brief Heat content of tracer n, as heat() (J per unit depth).
+  double tracerHeat(int n) {
+    return heatContent(_space, _cut, heatCapacities(), _phi, _tracers.at(n).temperature);
+  }
 
   /// \brief Solids content sum(capacity x phi) (x cell volume = m^3).
   double solids() { return solidsContent(_space, _cut, _phi); }
@@ -377,19 +397,38 @@ private:
                           _params.gasDensity * _params.thermal.gasHeatCapacity};
   }
 
-  /// \brief Advects the heat with the fluxes of the volume-fraction step just taken (u^n) and
-  /// diffuses it implicitly.
-  SolveStats energyStep(double dt) {
+  /// \brief Scratch fields of the energy step (shared by temperature() and the tracers).
+  void allocateHeatWork() {
+    if (_Tstar.extent(0) > 0) {
+      return;
+    }
+    const auto cellField = [&](char const* label) {
+      return makeField(_space, _grid, Staggering::Cell, label);
+    };
+    _Tstar = cellField("hikiln::cfd::Tstar");
+    _phiOld = cellField("hikiln::cfd::phiOld");
+    _kappa = cellField("hikiln::cfd::kappa");
+    _tAlpha = cellField("hikiln::cfd::tAlpha");
+    _tRhs = cellField("hikiln::cfd::tRhs");
+    for (int a = 0; a < 3; ++a) {
+      _tBeta[a] = makeField(_space, _grid, faceStaggering(a), "hikiln::cfd::tBeta");
+    }
+  }
+
+  /// \brief Advects the temperature T with the fluxes of the volume-fraction step just taken
+  /// (u^n) and diffuses it implicitly with the given thermal parameters.
+  SolveStats energyStep(double dt, field_type const& T, ThermalParameters const& thermal) {
     const HeatCapacities heat = heatCapacities();
-    advectHeat(_space, _cut, _u, _fct, dt, heat, _phiOld, _phi, _T, _Tstar);
-    diffusionCoefficients(_space, _cut, _periodic, heat, _params.thermal, _params.rheology.phiMax,
-                          dt, _phi, _Tstar, _kappa, _tAlpha, _tBeta, _tRhs);
+    advectHeat(_space, _cut, _periodic, _u, _fct, dt, 0.5 * _params.rheology.phiMax, heat, _phiOld,
+               _phi, T, _Tstar);
+    diffusionCoefficients(_space, _cut, _periodic, heat, thermal, _params.rheology.phiMax, dt, _phi,
+                          _Tstar, _kappa, _tAlpha, _tBeta, _tRhs);
     MultigridOptions topt;
     topt.tolerance = _params.pressureTolerance;
     topt.maxIterations = _params.maxIterations;
     CellMultigrid<ExecutionSpace> mg(_space, _grid, _pressureBc, _tAlpha, _tBeta, topt);
-    Kokkos::deep_copy(_space, _T, _Tstar);
-    const SolveStats stats = mg.solvePcg(_T, _tRhs);
+    Kokkos::deep_copy(_space, T, _Tstar);
+    const SolveStats stats = mg.solvePcg(T, _tRhs);
     if (!stats.converged) {
       throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: energy solve did not converge (" +
                                std::to_string(stats.iterations) + " iterations)");
@@ -470,6 +509,11 @@ private:
   field_type _alpha[3], _rhoFace[3], _beta[3];
   FctWork<memory_space> _fct;
   field_type _T, _Tstar, _phiOld, _kappa, _tAlpha, _tRhs, _tBeta[3];
+  struct TemperatureTracer {
+    field_type temperature;
+    ThermalParameters thermal;
+  };
+  std::vector<TemperatureTracer> _tracers;
   double _time = 0.0;
 };
 

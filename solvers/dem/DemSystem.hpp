@@ -82,6 +82,42 @@ struct DemConfig {
   PeriodicX periodic;
 };
 
+/// \brief Validates a configuration (normalising the flat-wall normals in place) and returns the
+/// kernel settings it gives (dt is set later, from the particles).
+inline ForceSettings prepareForceSettings(DemConfig& config) {
+  if (config.neighborCapacity < 1 || config.neighborCapacity > maxNeighborCapacity) {
+    throw std::invalid_argument("hikiln::dem::DemConfig: neighborCapacity must be in [1, " +
+                                std::to_string(maxNeighborCapacity) + "]");
+  }
+  if (config.walls.drum.enabled && !(config.walls.drum.radius > 0.0)) {
+    throw std::invalid_argument("hikiln::dem::DemConfig: drum radius must be > 0");
+  }
+  if (config.walls.numFlat < 0 || config.walls.numFlat > maxFlatWalls) {
+    throw std::invalid_argument("hikiln::dem::DemConfig: at most " + std::to_string(maxFlatWalls) +
+                                " flat walls");
+  }
+  for (int k = 0; k < config.walls.numFlat; ++k) {
+    FlatWall& w = config.walls.flat[k];
+    const double len = std::hypot(w.normalX, w.normalY);
+    if (!(len > 0.0)) {
+      throw std::invalid_argument("hikiln::dem::FlatWall: zero normal");
+    }
+    w.normalX /= len;
+    w.normalY /= len;
+  }
+  if (config.periodic.enabled && !(config.periodic.length > 0.0)) {
+    throw std::invalid_argument("hikiln::dem::DemConfig: periodic length must be > 0");
+  }
+  ForceSettings settings;
+  settings.particle = prepareContact(config.particleContact);
+  settings.wall = prepareContact(config.wallContact);
+  settings.walls = config.walls;
+  settings.periodic = config.periodic;
+  settings.gravityX = config.gravityX;
+  settings.gravityY = config.gravityY;
+  return settings;
+}
+
 /// \brief A 2D DEM system advanced on ExecutionSpace (see the file comment for the algorithm).
 template <class ExecutionSpace> class DemSystem {
 public:
@@ -92,37 +128,8 @@ public:
 
   /// \brief A system with no particles yet; validates the configuration.
   explicit DemSystem(DemConfig config, ExecutionSpace space = ExecutionSpace())
-      : _config(std::move(config)), _space(std::move(space)) {
-    if (_config.neighborCapacity < 1 || _config.neighborCapacity > maxNeighborCapacity) {
-      throw std::invalid_argument("hikiln::dem::DemConfig: neighborCapacity must be in [1, " +
-                                  std::to_string(maxNeighborCapacity) + "]");
-    }
-    if (_config.walls.drum.enabled && !(_config.walls.drum.radius > 0.0)) {
-      throw std::invalid_argument("hikiln::dem::DemConfig: drum radius must be > 0");
-    }
-    if (_config.walls.numFlat < 0 || _config.walls.numFlat > maxFlatWalls) {
-      throw std::invalid_argument("hikiln::dem::DemConfig: at most " +
-                                  std::to_string(maxFlatWalls) + " flat walls");
-    }
-    for (int k = 0; k < _config.walls.numFlat; ++k) {
-      FlatWall& w = _config.walls.flat[k];
-      const double len = std::hypot(w.normalX, w.normalY);
-      if (!(len > 0.0)) {
-        throw std::invalid_argument("hikiln::dem::FlatWall: zero normal");
-      }
-      w.normalX /= len;
-      w.normalY /= len;
-    }
-    if (_config.periodic.enabled && !(_config.periodic.length > 0.0)) {
-      throw std::invalid_argument("hikiln::dem::DemConfig: periodic length must be > 0");
-    }
-    _settings.particle = prepareContact(_config.particleContact);
-    _settings.wall = prepareContact(_config.wallContact);
-    _settings.walls = _config.walls;
-    _settings.periodic = _config.periodic;
-    _settings.gravityX = _config.gravityX;
-    _settings.gravityY = _config.gravityY;
-  }
+      : _config(std::move(config)), _space(std::move(space)),
+        _settings(prepareForceSettings(_config)) {}
 
   // Views are shared handles: a copy would alias the state, so systems are move-only.
   DemSystem(const DemSystem&) = delete;

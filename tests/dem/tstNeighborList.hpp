@@ -229,4 +229,66 @@ TEST(TEST_CATEGORY, dem_neighbor_history_follows_ids_through_reordering) {
   EXPECT_GT(fresh, 0);
 }
 
+// The optional second history (normalAngle, blocky pairs) follows the pair like shear through an
+// in-place rebuild after a move and through widening (copyNeighborRows), as BlockySystem uses it.
+TEST(TEST_CATEGORY, dem_neighbor_normal_angle_carried_like_shear) {
+  const int n = 301;
+  auto h = randomParticles(n, 12);
+  auto d = copyParticles<mem>(h);
+  const Bounds bounds = particleBounds(space(), d.position, n);
+  const CellGrid grid = makeCellGrid(bounds.xmin, bounds.xmax, bounds.ymin, bounds.ymax,
+                                     2.0 * rmax + skin, PeriodicX{}, 4 * n + 64);
+  CellBins<mem> bins;
+  binParticles(space(), grid, d.position, n, bins);
+  auto list = NeighborList<mem>::lean(n, 24);
+  list.allocateNormalAngle();
+  ASSERT_LE(
+      rebuildNeighborList(space(), bins, d.position, d.radius, d.id, n, skin, PeriodicX{}, list),
+      24);
+  const auto tag = [](std::int64_t a, std::int64_t c) { return 1000.0 * a + c; };
+  auto count = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, list.count);
+  auto index = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, list.index);
+  auto angle = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, list.normalAngle);
+  std::set<std::pair<std::int64_t, std::int64_t>> oldPairs;
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < count(i); ++k) {
+      angle(i, k) = -tag(h.id(i), h.id(index(i, k)));
+      oldPairs.emplace(h.id(i), h.id(index(i, k)));
+    }
+  }
+  Kokkos::deep_copy(list.normalAngle, angle);
+  auto wider = NeighborList<mem>::lean(n, 32);
+  wider.allocateNormalAngle();
+  copyNeighborRows(space(), n, list, wider);
+  std::mt19937_64 gen(13);
+  std::uniform_real_distribution<double> u(-0.003, 0.003);
+  for (int i = 0; i < n; ++i) {
+    h.position(i, 0) += u(gen);
+    h.position(i, 1) += u(gen);
+  }
+  Kokkos::deep_copy(d.position, Kokkos::create_mirror_view_and_copy(mem{}, h.position));
+  binParticles(space(), grid, d.position, n, bins);
+  ASSERT_LE(
+      rebuildNeighborList(space(), bins, d.position, d.radius, d.id, n, skin, PeriodicX{}, wider),
+      32);
+  count = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, wider.count);
+  index = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, wider.index);
+  angle = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, wider.normalAngle);
+  int kept = 0, fresh = 0;
+  for (int i = 0; i < n; ++i) {
+    for (int k = 0; k < count(i); ++k) {
+      const std::int64_t j = h.id(index(i, k));
+      if (oldPairs.count({h.id(i), j})) {
+        EXPECT_EQ(angle(i, k), -tag(h.id(i), j));
+        ++kept;
+      } else {
+        EXPECT_EQ(angle(i, k), 0.0);
+        ++fresh;
+      }
+    }
+  }
+  EXPECT_GT(kept, n);
+  EXPECT_GT(fresh, 0);
+}
+
 } // namespace

@@ -1,0 +1,146 @@
+#pragma once
+/// \file SplitLoop.hpp
+/// \brief Loops over the cells of a BoxSplit: the interior with a multidimensional policy and the
+/// branch-free stencil, the shell with a flat policy and the boundary closures. A stencil kernel
+/// is written once as a body with
+///
+///     template <bool Interior> KOKKOS_INLINE_FUNCTION double cell(int i, int j, int k) const;
+///
+/// (Interior tells the stencil that no closure is needed); forEachSplitCell ignores the returned
+/// value, sumOverSplitCells adds it up (e.g. a squared residual), forEachSplitColourCell visits one
+/// colour of a red-black sweep. Launch order and policies are those a hand-written interior +
+/// shell pair of launches would use, so results are bitwise those of such a pair.
+
+#include "kernels/cfd/BoxSplit.hpp"
+#include "kernels/cfd/Grid.hpp"
+
+#include <Kokkos_Core.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace hikiln::cfd {
+
+namespace detail {
+
+template <class Body> struct InteriorCells {
+  Body body;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, const int j, const int k) const {
+    body.template cell<true>(i, j, k);
+  }
+};
+
+/// (Reductions are separate functors with a value_type: Kokkos 3.4 deduces the reduction type
+/// from a functor's operator(), which must then not be overloaded.)
+template <class Body> struct InteriorSum {
+  using value_type = double;
+  Body body;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, const int j, const int k, double& sum) const {
+    sum += body.template cell<true>(i, j, k);
+  }
+};
+
+template <class Body> struct ShellCells {
+  Body body;
+  BoxSplit split;
+  KOKKOS_INLINE_FUNCTION void operator()(const std::int64_t s) const {
+    int i, j, k;
+    split.shellCell(s, i, j, k);
+    body.template cell<false>(i, j, k);
+  }
+};
+
+template <class Body> struct ShellSum {
+  using value_type = double;
+  Body body;
+  BoxSplit split;
+  KOKKOS_INLINE_FUNCTION void operator()(const std::int64_t s, double& sum) const {
+    int i, j, k;
+    split.shellCell(s, i, j, k);
+    sum += body.template cell<false>(i, j, k);
+  }
+};
+
+/// Interior cells of one colour ((i + j + k) % 2 == colour): the x range is walked in pairs so
+/// that no launch index is wasted on the other colour.
+template <class Body> struct InteriorColourCells {
+  Body body;
+  int i0, i1, colour;
+  KOKKOS_INLINE_FUNCTION void operator()(const int pair, const int j, const int k) const {
+    const int i = i0 + 2 * pair + ((colour + i0 + j + k) & 1); // (`half` is a CUDA type)
+    if (i < i1) {
+      body.template cell<true>(i, j, k);
+    }
+  }
+};
+
+template <class Body> struct ShellColourCells {
+  Body body;
+  BoxSplit split;
+  int colour;
+  KOKKOS_INLINE_FUNCTION void operator()(const std::int64_t s) const {
+    int i, j, k;
+    split.shellCell(s, i, j, k);
+    if (((i + j + k) & 1) == colour) {
+      body.template cell<false>(i, j, k);
+    }
+  }
+};
+
+} // namespace detail
+
+/// \brief body.cell<Interior>(i, j, k) on every cell of split (labels "<label>::interior/shell").
+template <class ExecutionSpace, class Body>
+void forEachSplitCell(ExecutionSpace const& space, std::string const& label, BoxSplit const& split,
+                      Body const& body) {
+  if (split.interiorSize() > 0) {
+    Kokkos::parallel_for(label + "::interior",
+                         gridPolicy(space, split.interiorLo, split.interiorHi),
+                         detail::InteriorCells<Body>{body});
+  }
+  if (split.shellSize() > 0) {
+    Kokkos::parallel_for(label + "::shell",
+                         Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
+                         detail::ShellCells<Body>{body, split});
+  }
+}
+
+/// \brief As forEachSplitCell; returns the sum of the values body.cell returns (interior sum plus
+/// shell sum, each a parallel reduction).
+template <class ExecutionSpace, class Body>
+double sumOverSplitCells(ExecutionSpace const& space, std::string const& label,
+                         BoxSplit const& split, Body const& body) {
+  double interior = 0.0, shell = 0.0;
+  if (split.interiorSize() > 0) {
+    Kokkos::parallel_reduce(label + "::interior",
+                            gridPolicy(space, split.interiorLo, split.interiorHi),
+                            detail::InteriorSum<Body>{body}, interior);
+  }
+  if (split.shellSize() > 0) {
+    Kokkos::parallel_reduce(label + "::shell",
+                            Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
+                            detail::ShellSum<Body>{body, split}, shell);
+  }
+  return interior + shell;
+}
+
+/// \brief body.cell<Interior>(i, j, k) on the cells of split with (i + j + k) % 2 == colour.
+template <class ExecutionSpace, class Body>
+void forEachSplitColourCell(ExecutionSpace const& space, std::string const& label,
+                            BoxSplit const& split, int colour, Body const& body) {
+  const int i0 = split.interiorLo[0];
+  const int i1 = split.interiorHi[0];
+  if (split.interiorSize() > 0) {
+    Kokkos::parallel_for(label + "::interior",
+                         gridPolicy(space, {0, split.interiorLo[1], split.interiorLo[2]},
+                                    {(i1 - i0 + 1) / 2, split.interiorHi[1], split.interiorHi[2]}),
+                         detail::InteriorColourCells<Body>{body, i0, i1, colour});
+  }
+  if (split.shellSize() > 0) {
+    Kokkos::parallel_for(label + "::shell",
+                         Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
+                         detail::ShellColourCells<Body>{body, split, colour});
+  }
+}
+
+} // namespace hikiln::cfd

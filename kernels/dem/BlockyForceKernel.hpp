@@ -1,0 +1,310 @@
+#pragma once
+/// \file BlockyForceKernel.hpp
+/// \brief Contact, wall and gravity forces of blocky (superquadric) particles from their full
+/// neighbour rows, as ForceKernel.hpp does for discs: each particle sums its own force and torque
+/// in neighbour-id order and writes only its own entries (no atomics, thread-count independent).
+///
+/// Broad phase: the neighbour list on bounding circles (ParticleArrays::radius = bounding radius);
+/// a slot is tested with the bounding circles before the narrow phase (SuperquadricContact.hpp).
+/// The contact law, the tangential history per slot and the infinite-mass rule for fixed
+/// particles are the disc engine's (ContactLaw.hpp). Torques use the lever from the centre to the
+/// contact point, r x F.
+///
+/// Pair symmetry: a pair of non-circles is always evaluated with the lower id as the first body
+/// (the same operations on the same values from both rows), so both rows get bitwise the same
+/// frame, force and history, and the forces are exactly opposite. A pair of circles takes the disc
+/// engine's pairFrame() from the row owner's side and the torque r F_t, so an all-circle system
+/// reproduces DemSystem bitwise.
+
+#include "kernels/common/Compat.hpp"
+#include "kernels/dem/BlockyArrays.hpp"
+#include "kernels/dem/ContactLaw.hpp"
+#include "kernels/dem/ForceKernel.hpp"
+#include "kernels/dem/NeighborList.hpp"
+#include "kernels/dem/ParticleArrays.hpp"
+#include "kernels/dem/SuperquadricContact.hpp"
+#include "kernels/dem/Walls.hpp"
+
+#include <Kokkos_Core.hpp>
+
+namespace hikiln::dem {
+
+namespace detail {
+
+/// \brief Offset of a stored angle (NeighborList::normalAngle, see encodeAngle()).
+inline constexpr double storedAngleOffset = 8.0;
+
+/// \brief Slot value of a pair's direction phi: +(phi' + offset) for a contact normal, -(phi' +
+/// offset) for a separating axis, with phi' = phi wrapped into [-pi, pi], so that 0 means none.
+KOKKOS_INLINE_FUNCTION double encodeAngle(double phi, bool normal) {
+  const double turn = 2.0 * constants::pi;
+  const double wrapped = phi - turn * math::floor(phi / turn + 0.5);
+  return normal ? wrapped + storedAngleOffset : -(wrapped + storedAngleOffset);
+}
+
+/// \brief The angle of a slot value (see encodeAngle()); 0 for none.
+KOKKOS_INLINE_FUNCTION double decodeAngle(double stored) {
+  return stored > 0.0 ? stored - storedAngleOffset
+                      : (stored < 0.0 ? -stored - storedAngleOffset : 0.0);
+}
+
+/// \brief Views of a blocky system and the per-slot / per-wall contact evaluation shared by the
+/// force and energy kernels.
+template <class MemorySpace> struct BlockyContacts {
+  using Vec = Kokkos::View<double* [2], MemorySpace>;
+  using Scalar = Kokkos::View<double*, MemorySpace>;
+  Vec x, v;
+  Scalar w, radius, mass;
+  Vec axis; ///< (cos, sin) of the orientations (BlockyArrays::axis)
+  Kokkos::View<SuperquadricShape*, MemorySpace> shape;
+  Kokkos::View<std::int64_t*, MemorySpace> id;
+  Kokkos::View<std::uint8_t*, MemorySpace> kind;
+  Kokkos::View<int*, MemorySpace> count;
+  Kokkos::View<int**, MemorySpace> index;
+  Kokkos::View<double**, MemorySpace> shear;
+  Kokkos::View<double**, MemorySpace> normalAngle; ///< empty: no warm starts
+  Kokkos::View<double* [wallSlotCount], MemorySpace> wallShear;
+  ForceSettings s;
+  int capacity = 0;
+
+  /// \brief Body axis of particle i.
+  KOKKOS_INLINE_FUNCTION BodyAxis axisOf(int i) const { return BodyAxis{axis(i, 0), axis(i, 1)}; }
+
+  /// \brief Contact of row owner i with neighbour j. On contact: the frame as seen by the first
+  /// body (i for circles, else the lower id; iFirst says which), the contact force and i's
+  /// force and torque from it. Returns false (nothing else set) when not touching. angle: the
+  /// slot's stored direction (encodeAngle() of the pair's last normal or separating axis, seen
+  /// from the lower id; 0: none), updated to this evaluation's (0 for circles, bounding circles or
+  /// rectangles apart).
+  KOKKOS_INLINE_FUNCTION bool pair(int i, int j, double shearOld, bool updateHistory,
+                                   ContactFrame& frame, ContactForce& c, double& fx, double& fy,
+                                   double& t, double& angle) const {
+    const double stored = angle;
+    angle = 0.0;
+    const double xi = x(i, 0), yi = x(i, 1);
+    const double ri = radius(i), rj = radius(j);
+    const double dx = s.periodic.minimumImage(x(j, 0) - xi);
+    const double dy = x(j, 1) - yi;
+    const double radsum = ri + rj;
+    if (!(dx * dx + dy * dy < radsum * radsum)) { // bounding circles apart: no velocity loads
+      return false;
+    }
+    const bool freeI = isFree(kind(i)), freeJ = isFree(kind(j));
+    if (!(freeI || freeJ)) {
+      return false;
+    }
+    const SuperquadricShape si = shape(i), sj = shape(j);
+    if (isCircle(si) && isCircle(sj)) { // the disc engine, from i's side
+      const double wi = w(i), wj = w(j);
+      if (!pairFrame(dx, dy, v(j, 0) - v(i, 0), v(j, 1) - v(i, 1), ri, rj, wi, wj, frame)) {
+        return false;
+      }
+      const double rr = s.particle.rolling ? rollingRadius(ri, rj) : 0.0;
+      c = evaluateContact(s.particle, frame, pairEffectiveMass(mass(i), freeI, mass(j), freeJ), rr,
+                          wi - wj, shearOld, s.dt, updateHistory);
+      fx = -c.normal * frame.nx + c.tangential * (-frame.ny);
+      fy = -c.normal * frame.ny + c.tangential * frame.nx;
+      t = ri * c.tangential + c.rollingTorque;
+      return true;
+    }
+    const bool iFirst = id(i) < id(j);
+    const int a = iFirst ? i : j, b = iFirst ? j : i;
+    const double abx = s.periodic.minimumImage(x(b, 0) - x(a, 0));
+    const double aby = x(b, 1) - x(a, 1);
+    PairContact pc;
+    const PairGuess guessKind =
+        stored > 0.0 ? PairGuess::Normal : (stored < 0.0 ? PairGuess::Axis : PairGuess::None);
+    const bool touching =
+        blockyPairContact(shape(a), axisOf(a), shape(b), axisOf(b), abx, aby, v(b, 0) - v(a, 0),
+                          v(b, 1) - v(a, 1), w(a), w(b), pc, guessKind, decodeAngle(stored));
+    angle = pc.axis ? encodeAngle(pc.angle, touching) : 0.0;
+    if (!touching) {
+      return false;
+    }
+    frame = pc.frame;
+    const double rr = s.particle.rolling ? rollingRadius(radius(a), radius(b)) : 0.0;
+    c = evaluateContact(s.particle, frame,
+                        pairEffectiveMass(mass(a), isFree(kind(a)), mass(b), isFree(kind(b))), rr,
+                        w(a) - w(b), shearOld, s.dt, updateHistory);
+    const double sign = iFirst ? 1.0 : -1.0; // force on the second body is opposite
+    fx = sign * (-c.normal * frame.nx + c.tangential * (-frame.ny));
+    fy = sign * (-c.normal * frame.ny + c.tangential * frame.nx);
+    const double lx = iFirst ? pc.rAx : pc.rBx, ly = iFirst ? pc.rAy : pc.rBy;
+    t = lx * fy - ly * fx + sign * c.rollingTorque;
+    return true;
+  }
+
+  /// \brief Contact of particle i with wall slot `slot` (0 drum, 1 + k flat wall k); as pair().
+  KOKKOS_INLINE_FUNCTION bool wall(int i, int slot, double shearOld, bool updateHistory,
+                                   ContactFrame& frame, ContactForce& c, double& fx, double& fy,
+                                   double& t) const {
+    if (!isFree(kind(i))) {
+      return false;
+    }
+    const SuperquadricShape si = shape(i);
+    const double ri = radius(i), wi = w(i);
+    double lx = 0.0, ly = 0.0;
+    const bool touching = slot == 0
+                              ? blockyDrumContact(si, axisOf(i), ri, s.walls.drum, x(i, 0), x(i, 1),
+                                                  v(i, 0), v(i, 1), wi, frame, lx, ly)
+                              : blockyFlatContact(si, axisOf(i), s.walls.flat[slot - 1], x(i, 0),
+                                                  x(i, 1), v(i, 0), v(i, 1), wi, frame, lx, ly);
+    if (!touching) {
+      return false;
+    }
+    const double spin = slot == 0 ? wi - s.walls.drum.angularVelocity : wi;
+    c = evaluateContact(s.wall, frame, mass(i), ri, spin, shearOld, s.dt, updateHistory);
+    fx = -c.normal * frame.nx + c.tangential * (-frame.ny);
+    fy = -c.normal * frame.ny + c.tangential * frame.nx;
+    t = (isCircle(si) ? ri * c.tangential : lx * fy - ly * fx) + c.rollingTorque;
+    return true;
+  }
+};
+
+/// \brief Per-particle force evaluation (see the file comment).
+template <class MemorySpace> struct BlockyForceFunctor {
+  BlockyContacts<MemorySpace> b;
+  Kokkos::View<double* [2], MemorySpace> f;
+  Kokkos::View<double*, MemorySpace> tq;
+
+  KOKKOS_INLINE_FUNCTION void operator()(int i) const {
+    double fx = 0.0, fy = 0.0, t = 0.0;
+    const int n = b.count(i) < b.capacity ? b.count(i) : b.capacity;
+    const bool warm = b.normalAngle.extent(0) > 0;
+    for (int k = 0; k < n; ++k) { // ascending neighbour id: a fixed summation order
+      ContactFrame frame;
+      ContactForce c;
+      double px = 0.0, py = 0.0, pt = 0.0;
+      double angle = warm ? b.normalAngle(i, k) : 0.0;
+      const bool touching =
+          b.pair(i, b.index(i, k), b.shear(i, k), b.s.updateHistory, frame, c, px, py, pt, angle);
+      if (warm && angle != b.normalAngle(i, k)) { // circle rows stay 0: no stores
+        b.normalAngle(i, k) = angle;
+      }
+      if (touching) {
+        b.shear(i, k) = c.shear;
+        fx += px;
+        fy += py;
+        t += pt;
+      } else if (b.shear(i, k) != 0.0) { // history ends with the contact
+        b.shear(i, k) = 0.0;
+      }
+    }
+    const int slots = 1 + b.s.walls.numFlat;
+    for (int slot = b.s.walls.drum.enabled ? 0 : 1; slot < slots; ++slot) {
+      ContactFrame frame;
+      ContactForce c;
+      double px = 0.0, py = 0.0, pt = 0.0;
+      if (b.wall(i, slot, b.wallShear(i, slot), b.s.updateHistory, frame, c, px, py, pt)) {
+        b.wallShear(i, slot) = c.shear;
+        fx += px;
+        fy += py;
+        t += pt;
+      } else if (b.wallShear(i, slot) != 0.0) {
+        b.wallShear(i, slot) = 0.0;
+      }
+    }
+    if (isFree(b.kind(i))) {
+      fx += b.mass(i) * b.s.gravityX;
+      fy += b.mass(i) * b.s.gravityY;
+    }
+    f(i, 0) = fx;
+    f(i, 1) = fy;
+    tq(i) = t;
+  }
+};
+
+/// \brief Elastic energy of the contacts (k_n delta^2 + k_t shear^2) / 2, pairs counted half from
+/// each side.
+template <class MemorySpace> struct BlockyElasticFunctor {
+  BlockyContacts<MemorySpace> b;
+  bool walls = false; ///< false: particle pairs, true: wall contacts
+
+  KOKKOS_INLINE_FUNCTION void operator()(int i, double& sum) const {
+    ContactFrame frame;
+    ContactForce c;
+    double fx, fy, t;
+    if (!walls) {
+      const int n = b.count(i) < b.capacity ? b.count(i) : b.capacity;
+      for (int k = 0; k < n; ++k) {
+        const double xi = b.shear(i, k);
+        double angle = b.normalAngle.extent(0) > 0 ? b.normalAngle(i, k) : 0.0; // not stored
+        if (b.pair(i, b.index(i, k), xi, false, frame, c, fx, fy, t, angle)) {
+          sum +=
+              0.25 * (b.s.particle.kn * frame.overlap * frame.overlap + b.s.particle.kt * xi * xi);
+        }
+      }
+      return;
+    }
+    for (int slot = b.s.walls.drum.enabled ? 0 : 1; slot < 1 + b.s.walls.numFlat; ++slot) {
+      const double xi = b.wallShear(i, slot);
+      if (b.wall(i, slot, xi, false, frame, c, fx, fy, t)) {
+        sum += 0.5 * (b.s.wall.kn * frame.overlap * frame.overlap + b.s.wall.kt * xi * xi);
+      }
+    }
+  }
+};
+
+template <class MemorySpace>
+BlockyContacts<MemorySpace>
+blockyContacts(ParticleArrays<MemorySpace> const& p, BlockyArrays<MemorySpace> const& blocky,
+               NeighborList<MemorySpace> const& list, WallContactState<MemorySpace> const& walls,
+               ForceSettings const& settings) {
+  BlockyContacts<MemorySpace> b;
+  b.x = p.position;
+  b.v = p.velocity;
+  b.w = p.angularVelocity;
+  b.radius = p.radius;
+  b.mass = p.mass;
+  b.axis = blocky.axis;
+  b.shape = blocky.shape;
+  b.id = p.id;
+  b.kind = p.kind;
+  b.count = list.count;
+  b.index = list.index;
+  b.shear = list.shear;
+  b.normalAngle = list.normalAngle;
+  b.wallShear = walls.shear;
+  b.s = settings;
+  b.capacity = list.capacity();
+  return b;
+}
+
+} // namespace detail
+
+/// \brief Forces and torques of blocky particles [0, n) into p.force / p.torque.
+template <class ExecutionSpace, class MemorySpace>
+void computeBlockyForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
+                         BlockyArrays<MemorySpace> const& blocky,
+                         NeighborList<MemorySpace> const& list,
+                         WallContactState<MemorySpace> const& walls,
+                         ForceSettings const& settings) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::dem::computeBlockyForces: particle memory not accessible");
+  detail::BlockyForceFunctor<MemorySpace> fun{
+      detail::blockyContacts(p, blocky, list, walls, settings), p.force, p.torque};
+  Kokkos::parallel_for(
+      "hikiln::dem::computeBlockyForces",
+      Kokkos::RangePolicy<ExecutionSpace, Kokkos::Schedule<Kokkos::Dynamic>>(space, 0, p.count())
+          .set_chunk_size(detail::forceChunk),
+      fun);
+}
+
+/// \brief Elastic energy of the particle pairs (first) and of the wall contacts (second) with the
+/// stored histories.
+template <class ExecutionSpace, class MemorySpace>
+Kokkos::pair<double, double>
+blockyElasticEnergy(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
+                    BlockyArrays<MemorySpace> const& blocky, NeighborList<MemorySpace> const& list,
+                    WallContactState<MemorySpace> const& walls, ForceSettings const& settings) {
+  const auto contacts = detail::blockyContacts(p, blocky, list, walls, settings);
+  const auto policy = Kokkos::RangePolicy<ExecutionSpace>(space, 0, p.count());
+  double pairs = 0.0, wall = 0.0;
+  Kokkos::parallel_reduce("hikiln::dem::blockyElasticPairs", policy,
+                          detail::BlockyElasticFunctor<MemorySpace>{contacts, false}, pairs);
+  Kokkos::parallel_reduce("hikiln::dem::blockyElasticWalls", policy,
+                          detail::BlockyElasticFunctor<MemorySpace>{contacts, true}, wall);
+  return {pairs, wall};
+}
+
+} // namespace hikiln::dem

@@ -1,0 +1,254 @@
+#pragma once
+/// \file Superquadric.hpp
+/// \brief 2D superquadric ("blocky") particle shapes |x/a|^N + |y/b|^N = 1 in the body frame:
+/// inside-outside function, boundary points and normals, support function, and (host) bounding
+/// radius, area, polar second moment and mass properties.
+///
+/// N = 2 is an ellipse (a disc when a = b); N = 3, 4, 6, 8 are increasingly square. The shape is
+/// the unit ball of the norm ||(x/a, y/b)||_N, so its support function is the dual norm h(u) = ||(a
+/// u_x, b u_y)||_M with 1/N + 1/M = 1 (closed form, used by the contact search).
+///
+/// Mass convention (2D): a blocky particle is a prism of the given thickness t, m = rho t A and
+/// I = rho t J (J the polar second moment of the outline about its centre), which is
+/// MassConvention::Disc for a circle. For a circle (N = 2, a = b) both conventions delegate to
+/// particleMass()/particleInertia(), so the disc engine's values are reproduced exactly; the Sphere
+/// convention has no blocky counterpart and is refused for other shapes.
+
+#include "kernels/common/Compat.hpp"
+#include "kernels/dem/ParticleArrays.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace hikiln::dem {
+
+/// \brief Outline |x/a|^n + |y/b|^n = 1 in the body frame (semi-axes a along body x, b along body
+/// y).
+struct SuperquadricShape {
+  double a = 1.0; ///< semi-axis along the body x axis (m)
+  double b = 1.0; ///< semi-axis along the body y axis (m)
+  double n = 2.0; ///< blockiness index N >= 2
+};
+
+/// \brief Smallest and largest blockiness and the largest aspect ratio the contact search is
+/// verified for (tstSuperquadricGeometry.hpp).
+inline constexpr double minBlockiness = 2.0;
+inline constexpr double maxBlockiness = 8.0;
+inline constexpr double maxAspectRatio = 3.0;
+
+/// \brief True for a circle (N = 2, a = b): contacts then use the disc engine's exact formulas.
+KOKKOS_INLINE_FUNCTION bool isCircle(const SuperquadricShape& s) {
+  return s.n == 2.0 && s.a == s.b;
+}
+
+/// \brief x^(1/k) for x >= 0, with cheap exact-root forms for the orders blocky shapes need most
+/// (k = 1, 2, 3, 4, 6, 8); pow otherwise.
+KOKKOS_INLINE_FUNCTION double rootOfOrder(double x, double k) {
+  if (k == 1.0) {
+    return x;
+  }
+  if (k == 2.0) {
+    return math::sqrt(x);
+  }
+  if (k == 3.0) {
+    return math::cbrt(x);
+  }
+  if (k == 4.0) {
+    return math::sqrt(math::sqrt(x));
+  }
+  if (k == 6.0) {
+    return math::sqrt(math::cbrt(x));
+  }
+  if (k == 8.0) {
+    return math::sqrt(math::sqrt(math::sqrt(x)));
+  }
+  return x > 0.0 ? math::pow(x, 1.0 / k) : 0.0;
+}
+
+/// \brief Inside-outside function F = |x/a|^N + |y/b|^N - 1 at a body-frame point (< 0 inside).
+KOKKOS_INLINE_FUNCTION double insideOutside(const SuperquadricShape& s, double x, double y) {
+  return math::pow(math::fabs(x / s.a), s.n) + math::pow(math::fabs(y / s.b), s.n) - 1.0;
+}
+
+/// \brief Gradient of insideOutside() at a body-frame point.
+KOKKOS_INLINE_FUNCTION void insideOutsideGradient(const SuperquadricShape& s, double x, double y,
+                                                  double& gx, double& gy) {
+  const double ux = math::fabs(x / s.a), uy = math::fabs(y / s.b);
+  gx = s.n / s.a * math::pow(ux, s.n - 1.0) * (x < 0.0 ? -1.0 : 1.0);
+  gy = s.n / s.b * math::pow(uy, s.n - 1.0) * (y < 0.0 ? -1.0 : 1.0);
+}
+
+/// \brief Body-frame boundary point for the parameter phi:
+/// (a sgn(cos) |cos|^(2/N), b sgn(sin) |sin|^(2/N)).
+KOKKOS_INLINE_FUNCTION void boundaryPoint(const SuperquadricShape& s, double phi, double& x,
+                                          double& y) {
+  const double c = math::cos(phi), sn = math::sin(phi);
+  x = s.a * (c < 0.0 ? -1.0 : 1.0) * math::pow(math::fabs(c), 2.0 / s.n);
+  y = s.b * (sn < 0.0 ? -1.0 : 1.0) * math::pow(math::fabs(sn), 2.0 / s.n);
+}
+
+/// \brief Unit outward normal (body frame) at boundaryPoint(phi).
+KOKKOS_INLINE_FUNCTION void boundaryNormal(const SuperquadricShape& s, double phi, double& nx,
+                                           double& ny) {
+  const double c = math::cos(phi), sn = math::sin(phi);
+  const double e = 2.0 * (s.n - 1.0) / s.n;
+  nx = (c < 0.0 ? -1.0 : 1.0) * math::pow(math::fabs(c), e) / s.a;
+  ny = (sn < 0.0 ? -1.0 : 1.0) * math::pow(math::fabs(sn), e) / s.b;
+  const double len = math::sqrt(nx * nx + ny * ny);
+  nx /= len;
+  ny /= len;
+}
+
+/// \brief Support of a shape in a body-frame direction (u, v) (unit): h = max over the outline of
+/// p . (u, v) and the point p that attains it.
+struct Support {
+  double h = 0.0;          ///< support value (m)
+  double x = 0.0, y = 0.0; ///< support point (m)
+};
+
+namespace detail {
+
+/// \brief The support of the N-norm ball in the direction (U, V) >= 0 (not both 0) in two roots:
+/// with big = max(U, V), t = min(U, V) / big in [0, 1], r = t^(1/(N-1)) and q = 1 + t r
+/// = 1 + t^M in [1, 2], g = q^(1/N): h = big q / g, and the support point's coordinates are 1 / g
+/// (along the bigger component) and r / g (along the smaller one), both in [0, 1].
+struct UnitSupport {
+  double h = 0.0;
+  double pU = 0.0, pV = 0.0; ///< support point / (a, b), without signs
+};
+
+KOKKOS_INLINE_FUNCTION UnitSupport unitSupport(double n, double U, double V) {
+  UnitSupport out;
+  const bool uBig = U >= V;
+  const double big = uBig ? U : V;
+  if (!(big > 0.0)) {
+    return out;
+  }
+  const double t = (uBig ? V : U) / big;
+  const double r = rootOfOrder(t, n - 1.0);
+  const double q = 1.0 + t * r;
+  const double invG = 1.0 / rootOfOrder(q, n);
+  out.h = big * q * invG;
+  out.pU = uBig ? invG : r * invG;
+  out.pV = uBig ? r * invG : invG;
+  return out;
+}
+
+} // namespace detail
+
+/// \brief Support value only: h = (|a u|^M + |b v|^M)^(1/M), M = N/(N-1), written as
+/// h = big (1 + t^M)^(1/M), t = small / big <= 1 (detail::unitSupport()): two roots, t^(1/(N-1))
+/// and (1 + t^M)^(1/N), both exact-root forms for N = 2, 3, 4 (and the second for 6, 8).
+KOKKOS_INLINE_FUNCTION double supportValue(const SuperquadricShape& s, double u, double v) {
+  return detail::unitSupport(s.n, s.a * math::fabs(u), s.b * math::fabs(v)).h;
+}
+
+/// \brief Support value and point: p = (a sgn(u) (U/h)^(1/(N-1)), b sgn(v) (V/h)^(1/(N-1))), which
+/// lies on the outline and has the outward normal (u, v); from the same two roots as
+/// supportValue().
+KOKKOS_INLINE_FUNCTION Support supportPoint(const SuperquadricShape& s, double u, double v) {
+  const detail::UnitSupport unit =
+      detail::unitSupport(s.n, s.a * math::fabs(u), s.b * math::fabs(v));
+  Support out;
+  out.h = unit.h;
+  out.x = s.a * unit.pU * (u < 0.0 ? -1.0 : 1.0);
+  out.y = s.b * unit.pV * (v < 0.0 ? -1.0 : 1.0);
+  return out;
+}
+
+/// \brief Throws std::invalid_argument (naming `where`) unless N in [2, 8], a, b > 0 and the
+/// aspect ratio max(a, b)/min(a, b) <= 3: the range the contact search is verified for.
+inline void validateShape(const SuperquadricShape& s, const std::string& where) {
+  if (!(s.n >= minBlockiness && s.n <= maxBlockiness)) {
+    throw std::invalid_argument(where + ": blockiness " + std::to_string(s.n) + " outside [2, 8]");
+  }
+  if (!(s.a > 0.0) || !(s.b > 0.0)) {
+    throw std::invalid_argument(where + ": semi-axes must be > 0");
+  }
+  const double ratio = s.a > s.b ? s.a / s.b : s.b / s.a;
+  if (!(ratio <= maxAspectRatio * (1.0 + 1e-12))) {
+    throw std::invalid_argument(where + ": aspect ratio " + std::to_string(ratio) +
+                                " outside [1, 3]");
+  }
+}
+
+/// \brief Radius of the smallest centred circle holding the outline, max |p| (host). Exact for
+/// ellipses (max(a, b)); otherwise the maximum of |p(phi)| on the first quadrant by a 256-point
+/// scan and a golden-section refinement (relative accuracy ~1e-15), widened by 1e-12 so that the
+/// broad phase never misses a contact by round-off.
+inline double boundingRadius(const SuperquadricShape& s) {
+  if (s.n == 2.0) {
+    return s.a > s.b ? s.a : s.b;
+  }
+  const auto radius2 = [&](double phi) {
+    double x = 0.0, y = 0.0;
+    boundaryPoint(s, phi, x, y);
+    return x * x + y * y;
+  };
+  const int samples = 256;
+  const double step = 0.5 * constants::pi / samples;
+  int best = 0;
+  for (int k = 1; k <= samples; ++k) {
+    if (radius2(k * step) > radius2(best * step)) {
+      best = k;
+    }
+  }
+  double lo = std::max(0.0, (best - 1) * step),
+         hi = std::min(0.5 * constants::pi, (best + 1) * step);
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int it = 0; it < 80; ++it) {
+    const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+    if (radius2(m1) > radius2(m2)) {
+      hi = m2;
+    } else {
+      lo = m1;
+    }
+  }
+  const double r2 = std::max({radius2(0.5 * (lo + hi)), s.a * s.a, s.b * s.b});
+  return std::sqrt(r2) * (1.0 + 1e-12);
+}
+
+/// \brief Area of the outline, A = 4 a b Gamma(1 + 1/N)^2 / Gamma(1 + 2/N) (host, closed form).
+inline double superquadricArea(const SuperquadricShape& s) {
+  const double g = std::tgamma(1.0 + 1.0 / s.n);
+  return 4.0 * s.a * s.b * g * g / std::tgamma(1.0 + 2.0 / s.n);
+}
+
+/// \brief Polar second moment of the area about the centre, J = int (x^2 + y^2) dA
+/// = (4/N) B(3/N, 1 + 1/N) (a^3 b + a b^3) with the Beta function B (host, closed form; from
+/// int x^2 dA = 4 a^3 b int_0^1 u^2 (1 - u^N)^(1/N) du and the substitution t = u^N).
+inline double superquadricPolarMoment(const SuperquadricShape& s) {
+  const double p = 3.0 / s.n, q = 1.0 + 1.0 / s.n;
+  const double beta = std::tgamma(p) * std::tgamma(q) / std::tgamma(p + q);
+  return 4.0 / s.n * beta * (s.a * s.a * s.a * s.b + s.a * s.b * s.b * s.b);
+}
+
+/// \brief Mass and moment of inertia of one particle.
+struct MassProperties {
+  double mass = 0.0;    ///< kg
+  double inertia = 0.0; ///< kg m^2
+};
+
+/// \brief Mass properties of a shape of density rho as a prism of the given thickness (see the file
+/// comment); circles delegate to the disc engine's functions under either convention.
+inline MassProperties superquadricMassProperties(const SuperquadricShape& s, double density,
+                                                 MassConvention convention, double thickness) {
+  MassProperties out;
+  if (isCircle(s)) {
+    out.mass = particleMass(convention, s.a, density, thickness);
+    out.inertia = particleInertia(convention, out.mass, s.a);
+    return out;
+  }
+  if (convention != MassConvention::Disc) {
+    throw std::invalid_argument("hikiln::dem::superquadricMassProperties: the sphere mass "
+                                "convention has no blocky counterpart; use the disc (prism) "
+                                "convention");
+  }
+  out.mass = density * thickness * superquadricArea(s);
+  out.inertia = density * thickness * superquadricPolarMoment(s);
+  return out;
+}
+
+} // namespace hikiln::dem
