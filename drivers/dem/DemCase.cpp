@@ -33,7 +33,12 @@ cases::CaseSchema buildSchema() {
       .range(1, 4)
       .defaultsTo("1.0")
       .doc("Centre distance of the glued discs over their diameter (1: touching)");
-  s.real("particles.diameter").unit("m").positive().defaultsTo("0.02").doc("Mean disc diameter");
+  s.real("particles.diameter")
+      .unit("m")
+      .positive()
+      .defaultsTo("0.02")
+      .doc("Mean diameter; superquadric: equal-area diameter d (area pi d^2/4, so the mass of a "
+           "disc of d)");
   s.real("particles.size_range")
       .unit("fraction")
       .range(0, 1)
@@ -48,7 +53,23 @@ cases::CaseSchema buildSchema() {
       .positive()
       .defaultsTo("0.02")
       .doc("Disc thickness (mass_convention: disc)");
-  s.integer("particles.seed").nonNegative().defaultsTo("12345").doc("Seed of the size draw");
+  s.integer("particles.seed")
+      .nonNegative()
+      .defaultsTo("12345")
+      .doc("Seed of the size draw (and, after it, of the superquadric orientations)");
+  s.choice("particles.shape", {"disc", "superquadric"})
+      .defaultsTo("disc")
+      .doc("Outline: disc, or superquadric |x/a|^N + |y/b|^N = 1 (docs/blocky-particles.md; needs "
+           "mass_convention disc, no heat)");
+  s.real("particles.blockiness")
+      .range(minBlockiness, maxBlockiness)
+      .defaultsTo("2")
+      .doc("Superquadric exponent N (2: ellipse or disc, 4, 6, 8: increasingly square)");
+  s.real("particles.aspect_ratio")
+      .unit("ratio")
+      .range(1, maxAspectRatio)
+      .defaultsTo("1")
+      .doc("Superquadric semi-axes b/a (1: as wide as long)");
   s.real("contact.normal_stiffness")
       .unit("N/m")
       .positive()
@@ -143,13 +164,26 @@ cases::CaseSchema buildSchema() {
       .unit("fraction")
       .positive()
       .defaultsTo("0.2")
-      .doc("Neighbour skin as a fraction of the largest diameter");
+      .doc(
+          "Neighbour skin as a fraction of the largest diameter (superquadric: bounding diameter)");
   s.integer("neighbor.capacity")
       .range(4, 64)
       .defaultsTo("12")
       .doc("Neighbour slots per particle (an overflow stops the run with an error)");
   s.real("gravity").unit("m/s^2").nonNegative().defaultsTo("9.81").doc("Gravity, along -y");
   addHeatKeys(s);
+  s.require("particles.blockiness = 2 and particles.aspect_ratio = 1 unless particles.shape: "
+            "superquadric",
+            [](const cases::CaseFile& c) {
+              return c.string("particles.shape") == "superquadric" ||
+                     (c.real("particles.blockiness") == 2 && c.real("particles.aspect_ratio") == 1);
+            });
+  s.require("particles.shape: superquadric needs particles.mass_convention: disc (a prism of "
+            "particles.thickness; the sphere convention has no blocky counterpart)",
+            [](const cases::CaseFile& c) {
+              return c.string("particles.shape") != "superquadric" ||
+                     c.string("particles.mass_convention") == "disc";
+            });
   s.require("spin_up < duration", [](const cases::CaseFile& c) {
     return c.real("time.spin_up") < c.real("time.duration");
   });
@@ -201,6 +235,9 @@ DrumRunSettings drumSettingsFromCase(const cases::CaseFile& c) {
                                                                       : MassConvention::Sphere;
   s.fill.thickness = c.real("particles.thickness");
   s.fill.seed = static_cast<std::uint64_t>(c.integer("particles.seed"));
+  s.fill.shape.superquadric = c.string("particles.shape") == "superquadric";
+  s.fill.shape.blockiness = c.real("particles.blockiness");
+  s.fill.shape.aspectRatio = c.real("particles.aspect_ratio");
   if (c.string("walls.roughness") == "glued") {
     s.fill.shellBumpDiameter = c.real("walls.bump_diameter") * s.fill.meanDiameter;
     s.fill.shellBumpSpacing = c.real("walls.bump_spacing");
@@ -211,7 +248,8 @@ DrumRunSettings drumSettingsFromCase(const cases::CaseFile& c) {
   s.config.timeStepSafety = c.real("time.step_safety");
   s.config.gravityX = 0.0;
   s.config.gravityY = -c.real("gravity");
-  s.config.skin = c.real("neighbor.skin") * s.fill.meanDiameter * (1 + s.fill.sizeRange);
+  s.config.skin = c.real("neighbor.skin") * s.fill.meanDiameter * (1 + s.fill.sizeRange) *
+                  boundingRadiusRatio(s.fill.shape);
   s.config.neighborCapacity = static_cast<int>(c.integer("neighbor.capacity"));
   s.config.walls.drum.enabled = true;
   s.config.walls.drum.radius = s.fill.drumRadius;

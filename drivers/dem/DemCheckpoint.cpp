@@ -47,6 +47,13 @@ io::Checkpoint toCheckpoint(const DemState& s, const std::string& stage) {
   c.integers["kind"].assign(s.kind.begin(), s.kind.end());
   c.reals["shell_home"] = s.shellHome;
   c.scalars["shell_angle"] = s.shellAngle;
+  if (!s.orientation.empty()) { // a blocky system; disc checkpoints stay as they were
+    c.reals["orientation"] = s.orientation;
+    c.reals["shape_a"] = s.shapeA;
+    c.reals["shape_b"] = s.shapeB;
+    c.reals["shape_n"] = s.shapeN;
+    c.reals["contact_angle"] = s.contactAngle;
+  }
   return c;
 }
 
@@ -81,6 +88,15 @@ DemState fromCheckpoint(const io::Checkpoint& c) {
   }
   if (const auto it = c.scalars.find("shell_angle"); it != c.scalars.end()) {
     s.shellAngle = it->second;
+  }
+  // blocky particles: orientations, shapes and the pairs' stored search directions (all or none;
+  // importState() checks their sizes)
+  if (c.reals.count("orientation") != 0) {
+    s.orientation = entry(c.reals, "orientation");
+    s.shapeA = entry(c.reals, "shape_a");
+    s.shapeB = entry(c.reals, "shape_b");
+    s.shapeN = entry(c.reals, "shape_n");
+    s.contactAngle = entry(c.reals, "contact_angle");
   }
   return s;
 }

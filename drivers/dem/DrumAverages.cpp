@@ -2,6 +2,7 @@
 
 #include "drivers/calibrate/PlotScript.hpp"
 #include "drivers/dem/AveragesFile.hpp"
+#include "solvers/dem/DrumShapes.hpp"
 
 #include <spdlog/spdlog.h>
 
@@ -26,11 +27,14 @@ double relativeChange(double now, double before) {
 }
 
 // Mean diameter summed in sorted order: the same value whatever the particle order (restarts).
-double meanDiameterOf(const ParticleArrays<Kokkos::HostSpace>& bed) {
+// Blocky particles: the equal-area diameter (radius holds the bounding radius).
+double meanDiameterOf(const ParticleArrays<Kokkos::HostSpace>& bed,
+                      const ParticleShapeSpec& shape) {
+  const double boundingOverEqualArea = boundingRadiusRatio(shape);
   std::vector<double> d;
   for (std::size_t i = 0; i < bed.count(); ++i)
     if (isFree(bed.kind(i))) // a rough shell's glued discs are not bed
-      d.push_back(2.0 * bed.radius(i));
+      d.push_back(2.0 * bed.radius(i) / boundingOverEqualArea);
   std::sort(d.begin(), d.end());
   double sum = 0.0;
   for (double v : d)
@@ -54,7 +58,7 @@ void DrumAverages::create(double thickness, double meanDiameter, double fill) {
 }
 
 void DrumAverages::start(const ParticleArrays<Kokkos::HostSpace>& bed, double fill) {
-  const double d = meanDiameterOf(bed);
+  const double d = meanDiameterOf(bed, _run.fill.shape);
   create(_run.fill.convention == MassConvention::Sphere ? d : _run.fill.thickness, d, fill);
   _history.clear();
 }

@@ -98,6 +98,40 @@ nlohmann::json particleKindCounts(const ParticleArrays<Kokkos::HostSpace>& host)
   return {{"free", counts[0]}, {"fixed", counts[1]}, {"shell", counts[2]}};
 }
 
+/// Puts the particles (with their shapes, for blocky ones) into the system.
+void setDrumParticles(DemSystem<Space>& system, const DrumParticles& d) {
+  if (d.blocky())
+    system.setParticles(d.particles, d.shapes);
+  else
+    system.setParticles(d.particles);
+}
+
+/// The system's particles with their current shapes and orientations.
+DrumParticles currentParticles(const DemSystem<Space>& system) {
+  return {system.hostParticles(), system.hostShapes()};
+}
+
+/// summary.json "particle_shape".
+nlohmann::json particleShapeSummary(const FillSpec& fill) {
+  if (!fill.shape.superquadric)
+    return {{"shape", "disc"}, {"size", "particles.diameter is the disc diameter"}};
+  return {{"shape", "superquadric"},
+          {"blockiness", fill.shape.blockiness},
+          {"aspect_ratio", fill.shape.aspectRatio},
+          {"bounding_over_equal_area_radius", boundingRadiusRatio(fill.shape)},
+          {"size", "particles.diameter is the equal-area diameter d (area pi d^2/4); radius in "
+                   "snapshots and checkpoints is the bounding radius"}};
+}
+
+std::string describeShape(const FillSpec& fill) {
+  if (!fill.shape.superquadric)
+    return "discs";
+  return fmt::format("superquadrics N = {:g}, aspect ratio {:g} (equal-area diameter {:g} m, "
+                     "bounding radius {:.4f} x d/2)",
+                     fill.shape.blockiness, fill.shape.aspectRatio, fill.meanDiameter,
+                     boundingRadiusRatio(fill.shape));
+}
+
 } // namespace
 
 int runDrum(const DrumRunOptions& o) {
@@ -148,21 +182,22 @@ int runDrum(const DrumRunOptions& o) {
   } else {
     file.writeResolved((out / "case.resolved.yaml").string());
     const auto t0 = Clock::now();
-    system.setParticles(generateDrumLattice(s.fill));
-    spdlog::info("filling: {} particles on a lattice, dt = {:.3g} s, settling {} s", system.size(),
-                 system.timeStep(), s.settleTime);
+    setDrumParticles(system, generateDrumParticles(s.fill));
+    spdlog::info("filling: {} {} on a lattice, dt = {:.3g} s, settling {} s", system.size(),
+                 describeShape(s.fill), system.timeStep(), s.settleTime);
     settle(system, s.settleTime, -s.config.gravityY, "settle");
     // Trimming lets the bed compact (its bulk fraction rises), so trim with a margin first, then
     // to the requested fill with the bulk fraction measured after the first trim.
     const double margins[] = {1.08, 1.0};
     for (double margin : margins) {
-      const BedMeasurement now = measureBed(system.hostParticles(), R);
-      system.setParticles(
-          trimToFill(system.hostParticles(), R, margin * s.fill.fill, now.bulkFraction));
+      const DrumParticles current = currentParticles(system);
+      const BedMeasurement now = measureBed(current.particles, R, current.shapes);
+      setDrumParticles(system, trimToFill(current, R, margin * s.fill.fill, now.bulkFraction));
       settle(system, 0.5 * s.settleTime, -s.config.gravityY, "settle after trim");
     }
     requireFinite(system, "settling");
-    const BedMeasurement bed = measureBed(system.hostParticles(), R);
+    const DrumParticles settled = currentParticles(system);
+    const BedMeasurement bed = measureBed(settled.particles, R, settled.shapes);
     fillMeasured = bed.fill;
     bulkFraction = bed.bulkFraction;
     averages.start(system.hostParticles(), fillMeasured);
@@ -176,7 +211,19 @@ int runDrum(const DrumRunOptions& o) {
     heat.start(system, 0.0); // temperatures start with the rotation
   }
 
-  ParticleSnapshots snapshots(out.string(), info, restartTime, heat.snapshotFieldNames());
+  std::vector<std::string> snapshotFieldNames = heat.snapshotFieldNames();
+  if (system.blocky()) {
+    const auto names = shapeFieldNames();
+    snapshotFieldNames.insert(snapshotFieldNames.end(), names.begin(), names.end());
+  }
+  ParticleSnapshots snapshots(out.string(), info, restartTime, snapshotFieldNames);
+  // heat fields and, for blocky particles, the orientations and shapes
+  const auto snapshotFields = [&](const ParticleArrays<Kokkos::HostSpace>& host) {
+    std::vector<ParticleField> fields = heat.snapshotFields(host);
+    for (ParticleField& f : shapeFields(system.hostShapes(), host.count()))
+      fields.push_back(std::move(f));
+    return fields;
+  };
   const double dt = system.timeStep();
   const auto everyN = [dt](double interval) {
     return std::max<std::int64_t>(1, std::llround(interval / dt));
@@ -189,7 +236,7 @@ int runDrum(const DrumRunOptions& o) {
   const std::int64_t spinUpSteps = std::llround(s.spinUp / dt);
   if (!o.restart) {
     const auto host = system.hostParticles();
-    snapshots.write(system.stepCount(), system.time(), host, heat.snapshotFields(host));
+    snapshots.write(system.stepCount(), system.time(), host, snapshotFields(host));
   }
 
   const auto rotateStart = Clock::now();
@@ -217,7 +264,7 @@ int runDrum(const DrumRunOptions& o) {
       // the first sample on or past each interval, counted from the previous sample (not from
       // k - n: a restart from a checkpoint between samples must pick the same samples)
       if ((k - sampleEvery) / snapshotEvery != k / snapshotEvery)
-        snapshots.write(system.stepCount(), system.time(), host, heat.snapshotFields(host));
+        snapshots.write(system.stepCount(), system.time(), host, snapshotFields(host));
     }
     // cumulative averages.h5 at the first step on or past each interval (k moves in sample steps)
     if (k >= spinUpSteps && ((k - n) / averageEvery != k / averageEvery || k == totalSteps))
@@ -251,7 +298,8 @@ int runDrum(const DrumRunOptions& o) {
   summary["backend"] = app::defaultBackend();
   summary["threads"] = Space::concurrency();
   summary["restarted"] = o.restart;
-  summary["particles"] = system.size(); // all discs, glued shell discs included
+  summary["particles"] = system.size(); // glued shell discs included
+  summary["particle_shape"] = particleShapeSummary(s.fill);
   summary["particles_by_kind"] = particleKindCounts(system.hostParticles());
   summary["fill_requested"] = s.fill.fill;
   summary["fill_measured"] = fillMeasured;

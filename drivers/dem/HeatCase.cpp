@@ -165,6 +165,11 @@ void addHeatKeys(cases::CaseSchema& s) {
                                  c.real("heat.radiation_range"), skinOf(c)));
                }
              });
+  s.require("heat.enabled needs particles.shape: disc (heat is disc-only: its shells, contact "
+            "areas and radiating surfaces are disc geometry; docs/blocky-particles.md)",
+            [](const cases::CaseFile& c) {
+              return !c.boolean("heat.enabled") || c.string("particles.shape") == "disc";
+            });
   s.addCheck("heat.internal_conduction: false lumps each particle into one shell",
              [](const cases::CaseFile& c) {
                if (!c.boolean("heat.internal_conduction") &&

@@ -20,6 +20,28 @@ std::vector<io::XdmfAttribute> snapshotAttributes() {
 }
 } // namespace
 
+std::vector<ParticleField> shapeFields(const BlockyArrays<Kokkos::HostSpace>& shapes,
+                                       std::size_t count) {
+  if (shapes.capacity() == 0)
+    return {};
+  const std::vector<std::string> names = shapeFieldNames();
+  const char* units[] = {"rad", "m", "m", "1"};
+  std::vector<ParticleField> f(names.size());
+  for (std::size_t k = 0; k < names.size(); ++k)
+    f[k].name = names[k], f[k].unit = units[k];
+  for (std::size_t i = 0; i < count; ++i) {
+    f[0].values.push_back(shapes.orientation(i));
+    f[1].values.push_back(shapes.shape(i).a);
+    f[2].values.push_back(shapes.shape(i).b);
+    f[3].values.push_back(shapes.shape(i).n);
+  }
+  return f;
+}
+
+std::vector<std::string> shapeFieldNames() {
+  return {"orientation", "semi_axis_a", "semi_axis_b", "blockiness"};
+}
+
 ParticleSnapshots::ParticleSnapshots(std::string directory, io::RunInfo info, double keepUntil,
                                      const std::vector<std::string>& extraFields)
     : _directory(std::move(directory)), _info(std::move(info)) {

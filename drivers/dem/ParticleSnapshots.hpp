@@ -5,6 +5,7 @@
 
 #include "drivers/io/Hdf5File.hpp"
 #include "drivers/io/Xdmf.hpp"
+#include "kernels/dem/BlockyArrays.hpp"
 #include "kernels/dem/ParticleArrays.hpp"
 
 #include <string>
@@ -19,6 +20,16 @@ struct ParticleField {
   std::string unit;
   std::vector<double> values;
 };
+
+/// \brief Shape fields of blocky particles, in the order of `shapes`: orientation (rad, body x axis
+/// from x), semi_axis_a, semi_axis_b (m) and blockiness (N); none for discs (capacity 0). With
+/// position they let ParaView draw each outline (e.g. a glyph scaled by the semi-axes, turned by
+/// the orientation).
+std::vector<ParticleField> shapeFields(const BlockyArrays<Kokkos::HostSpace>& shapes,
+                                       std::size_t count);
+
+/// \brief Names of the fields shapeFields() writes for blocky particles.
+std::vector<std::string> shapeFieldNames();
 
 /// \brief Writes snapshots into DIR/snapshots/ and keeps DIR/particles.xmf listing them.
 class ParticleSnapshots {

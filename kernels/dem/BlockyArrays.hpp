@@ -20,7 +20,7 @@ template <class MemorySpace> struct BlockyArrays {
   Kokkos::View<double*, MemorySpace> orientation;      ///< body x axis angle (rad, ccw)
   Kokkos::View<SuperquadricShape*, MemorySpace> shape; ///< outline in the body frame
   /// (cos, sin) of the orientation, the body x axis: a cache the force kernel reads, set by
-  /// updateOrientationAxes() and advanceOrientation() (BlockySystem keeps it current; circles keep
+  /// updateOrientationAxes() and advanceOrientation() (DemSystem keeps it current; circles keep
   /// the axis of their initial orientation, which their outline does not depend on).
   Kokkos::View<double* [2], MemorySpace> axis;
 

@@ -27,6 +27,8 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <stdexcept>
+
 namespace hikiln::dem {
 
 namespace detail {
@@ -75,10 +77,11 @@ template <class MemorySpace> struct BlockyContacts {
   /// force and torque from it. Returns false (nothing else set) when not touching. angle: the
   /// slot's stored direction (encodeAngle() of the pair's last normal or separating axis, seen
   /// from the lower id; 0: none), updated to this evaluation's (0 for circles, bounding circles or
-  /// rectangles apart).
+  /// rectangles apart). lx, ly: i's lever to the contact point as the coarse-graining takes it
+  /// (non-circles: the torque's lever; circles: (r_i - overlap / 2) n, as CoarseGrainContact.hpp).
   KOKKOS_INLINE_FUNCTION bool pair(int i, int j, double shearOld, bool updateHistory,
                                    ContactFrame& frame, ContactForce& c, double& fx, double& fy,
-                                   double& t, double& angle) const {
+                                   double& t, double& angle, double& lx, double& ly) const {
     const double stored = angle;
     angle = 0.0;
     const double xi = x(i, 0), yi = x(i, 1);
@@ -105,6 +108,8 @@ template <class MemorySpace> struct BlockyContacts {
       fx = -c.normal * frame.nx + c.tangential * (-frame.ny);
       fy = -c.normal * frame.ny + c.tangential * frame.nx;
       t = ri * c.tangential + c.rollingTorque;
+      lx = (ri - 0.5 * frame.overlap) * frame.nx;
+      ly = (ri - 0.5 * frame.overlap) * frame.ny;
       return true;
     }
     const bool iFirst = id(i) < id(j);
@@ -129,7 +134,8 @@ template <class MemorySpace> struct BlockyContacts {
     const double sign = iFirst ? 1.0 : -1.0; // force on the second body is opposite
     fx = sign * (-c.normal * frame.nx + c.tangential * (-frame.ny));
     fy = sign * (-c.normal * frame.ny + c.tangential * frame.nx);
-    const double lx = iFirst ? pc.rAx : pc.rBx, ly = iFirst ? pc.rAy : pc.rBy;
+    lx = iFirst ? pc.rAx : pc.rBx;
+    ly = iFirst ? pc.rAy : pc.rBy;
     t = lx * fy - ly * fx + sign * c.rollingTorque;
     return true;
   }
@@ -137,13 +143,12 @@ template <class MemorySpace> struct BlockyContacts {
   /// \brief Contact of particle i with wall slot `slot` (0 drum, 1 + k flat wall k); as pair().
   KOKKOS_INLINE_FUNCTION bool wall(int i, int slot, double shearOld, bool updateHistory,
                                    ContactFrame& frame, ContactForce& c, double& fx, double& fy,
-                                   double& t) const {
+                                   double& t, double& lx, double& ly) const {
     if (!isFree(kind(i))) {
       return false;
     }
     const SuperquadricShape si = shape(i);
     const double ri = radius(i), wi = w(i);
-    double lx = 0.0, ly = 0.0;
     const bool touching = slot == 0
                               ? blockyDrumContact(si, axisOf(i), ri, s.walls.drum, x(i, 0), x(i, 1),
                                                   v(i, 0), v(i, 1), wi, frame, lx, ly)
@@ -156,7 +161,13 @@ template <class MemorySpace> struct BlockyContacts {
     c = evaluateContact(s.wall, frame, mass(i), ri, spin, shearOld, s.dt, updateHistory);
     fx = -c.normal * frame.nx + c.tangential * (-frame.ny);
     fy = -c.normal * frame.ny + c.tangential * frame.nx;
-    t = (isCircle(si) ? ri * c.tangential : lx * fy - ly * fx) + c.rollingTorque;
+    if (isCircle(si)) {
+      t = ri * c.tangential + c.rollingTorque;
+      lx = (ri - 0.5 * frame.overlap) * frame.nx;
+      ly = (ri - 0.5 * frame.overlap) * frame.ny;
+    } else {
+      t = lx * fy - ly * fx + c.rollingTorque;
+    }
     return true;
   }
 };
@@ -174,10 +185,10 @@ template <class MemorySpace> struct BlockyForceFunctor {
     for (int k = 0; k < n; ++k) { // ascending neighbour id: a fixed summation order
       ContactFrame frame;
       ContactForce c;
-      double px = 0.0, py = 0.0, pt = 0.0;
+      double px = 0.0, py = 0.0, pt = 0.0, lx = 0.0, ly = 0.0;
       double angle = warm ? b.normalAngle(i, k) : 0.0;
-      const bool touching =
-          b.pair(i, b.index(i, k), b.shear(i, k), b.s.updateHistory, frame, c, px, py, pt, angle);
+      const bool touching = b.pair(i, b.index(i, k), b.shear(i, k), b.s.updateHistory, frame, c, px,
+                                   py, pt, angle, lx, ly);
       if (warm && angle != b.normalAngle(i, k)) { // circle rows stay 0: no stores
         b.normalAngle(i, k) = angle;
       }
@@ -194,8 +205,8 @@ template <class MemorySpace> struct BlockyForceFunctor {
     for (int slot = b.s.walls.drum.enabled ? 0 : 1; slot < slots; ++slot) {
       ContactFrame frame;
       ContactForce c;
-      double px = 0.0, py = 0.0, pt = 0.0;
-      if (b.wall(i, slot, b.wallShear(i, slot), b.s.updateHistory, frame, c, px, py, pt)) {
+      double px = 0.0, py = 0.0, pt = 0.0, lx = 0.0, ly = 0.0;
+      if (b.wall(i, slot, b.wallShear(i, slot), b.s.updateHistory, frame, c, px, py, pt, lx, ly)) {
         b.wallShear(i, slot) = c.shear;
         fx += px;
         fy += py;
@@ -223,13 +234,13 @@ template <class MemorySpace> struct BlockyElasticFunctor {
   KOKKOS_INLINE_FUNCTION void operator()(int i, double& sum) const {
     ContactFrame frame;
     ContactForce c;
-    double fx, fy, t;
+    double fx, fy, t, lx, ly;
     if (!walls) {
       const int n = b.count(i) < b.capacity ? b.count(i) : b.capacity;
       for (int k = 0; k < n; ++k) {
         const double xi = b.shear(i, k);
         double angle = b.normalAngle.extent(0) > 0 ? b.normalAngle(i, k) : 0.0; // not stored
-        if (b.pair(i, b.index(i, k), xi, false, frame, c, fx, fy, t, angle)) {
+        if (b.pair(i, b.index(i, k), xi, false, frame, c, fx, fy, t, angle, lx, ly)) {
           sum +=
               0.25 * (b.s.particle.kn * frame.overlap * frame.overlap + b.s.particle.kt * xi * xi);
         }
@@ -238,10 +249,62 @@ template <class MemorySpace> struct BlockyElasticFunctor {
     }
     for (int slot = b.s.walls.drum.enabled ? 0 : 1; slot < 1 + b.s.walls.numFlat; ++slot) {
       const double xi = b.wallShear(i, slot);
-      if (b.wall(i, slot, xi, false, frame, c, fx, fy, t)) {
+      if (b.wall(i, slot, xi, false, frame, c, fx, fy, t, lx, ly)) {
         sum += 0.5 * (b.s.wall.kn * frame.overlap * frame.overlap + b.s.wall.kt * xi * xi);
       }
     }
+  }
+};
+
+/// \brief Sampling evaluation (nothing of the state changes): F_n, F_t per neighbour and wall slot
+/// (zero when not touching; F_t along the row owner's t) and the particle's contact virial
+/// sum (x_c - x_i) (x) f_i (xx, xy, yx, yy; tension positive), with the levers of pair() / wall().
+template <class MemorySpace> struct BlockySampleFunctor {
+  BlockyContacts<MemorySpace> b;
+  Kokkos::View<double**, MemorySpace> slotFn, slotFt;
+  Kokkos::View<double*[wallSlotCount], MemorySpace> wallFn, wallFt;
+  Kokkos::View<double* [4], MemorySpace> virial;
+
+  KOKKOS_INLINE_FUNCTION void operator()(int i) const {
+    double wxx = 0.0, wxy = 0.0, wyx = 0.0, wyy = 0.0;
+    const auto add = [&](double lx, double ly, double fx, double fy) {
+      wxx += lx * fx;
+      wxy += lx * fy;
+      wyx += ly * fx;
+      wyy += ly * fy;
+    };
+    const int n = b.count(i) < b.capacity ? b.count(i) : b.capacity;
+    const bool warm = b.normalAngle.extent(0) > 0;
+    for (int k = 0; k < n; ++k) {
+      ContactFrame frame;
+      ContactForce c;
+      double fx = 0.0, fy = 0.0, t = 0.0, lx = 0.0, ly = 0.0;
+      double angle = warm ? b.normalAngle(i, k) : 0.0; // a local copy: not stored
+      const bool touching =
+          b.pair(i, b.index(i, k), b.shear(i, k), false, frame, c, fx, fy, t, angle, lx, ly);
+      slotFn(i, k) = touching ? c.normal : 0.0;
+      slotFt(i, k) = touching ? c.tangential : 0.0;
+      if (touching) {
+        add(lx, ly, fx, fy);
+      }
+    }
+    for (int slot = 0; slot < wallSlotCount; ++slot) {
+      ContactFrame frame;
+      ContactForce c;
+      double fx = 0.0, fy = 0.0, t = 0.0, lx = 0.0, ly = 0.0;
+      const bool present = slot == 0 ? b.s.walls.drum.enabled : slot <= b.s.walls.numFlat;
+      const bool touching =
+          present && b.wall(i, slot, b.wallShear(i, slot), false, frame, c, fx, fy, t, lx, ly);
+      wallFn(i, slot) = touching ? c.normal : 0.0;
+      wallFt(i, slot) = touching ? c.tangential : 0.0;
+      if (touching) {
+        add(lx, ly, fx, fy);
+      }
+    }
+    virial(i, 0) = wxx;
+    virial(i, 1) = wxy;
+    virial(i, 2) = wyx;
+    virial(i, 3) = wyy;
   }
 };
 
@@ -285,6 +348,37 @@ void computeBlockyForces(ExecutionSpace const& space, ParticleArrays<MemorySpace
       detail::blockyContacts(p, blocky, list, walls, settings), p.force, p.torque};
   Kokkos::parallel_for(
       "hikiln::dem::computeBlockyForces",
+      Kokkos::RangePolicy<ExecutionSpace, Kokkos::Schedule<Kokkos::Dynamic>>(space, 0, p.count())
+          .set_chunk_size(detail::forceChunk),
+      fun);
+}
+
+/// \brief The contact forces of the current state for samplers, as computeContactForces() for
+/// discs (list.normalForce / tangentialForce, walls.normalForce / tangentialForce allocated to the
+/// list's shape), plus each particle's contact virial into `virial` (n x 4: xx, xy, yx, yy).
+template <class ExecutionSpace, class MemorySpace>
+void computeBlockyContactForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
+                                BlockyArrays<MemorySpace> const& blocky,
+                                NeighborList<MemorySpace> const& list,
+                                WallContactState<MemorySpace> const& walls,
+                                ForceSettings const& settings,
+                                Kokkos::View<double* [4], MemorySpace> const& virial) {
+  if (list.normalForce.extent(0) < p.count() ||
+      list.normalForce.extent(1) != list.index.extent(1) ||
+      list.tangentialForce.extent(1) != list.index.extent(1) ||
+      walls.normalForce.extent(0) < p.count() || virial.extent(0) < p.count()) {
+    throw std::invalid_argument("hikiln::dem::computeBlockyContactForces: force or virial views "
+                                "not allocated to the list's shape");
+  }
+  detail::BlockySampleFunctor<MemorySpace> fun{
+      detail::blockyContacts(p, blocky, list, walls, settings),
+      list.normalForce,
+      list.tangentialForce,
+      walls.normalForce,
+      walls.tangentialForce,
+      virial};
+  Kokkos::parallel_for(
+      "hikiln::dem::computeBlockyContactForces",
       Kokkos::RangePolicy<ExecutionSpace, Kokkos::Schedule<Kokkos::Dynamic>>(space, 0, p.count())
           .set_chunk_size(detail::forceChunk),
       fun);

@@ -19,6 +19,8 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <stdexcept>
+
 namespace hikiln::dem::cg {
 
 /// \brief Contact virial of particle i: its neighbour-row contacts (last stored F_n, F_t; slots
@@ -57,12 +59,16 @@ KOKKOS_INLINE_FUNCTION Tensor2 particleVirial(int i, PositionView const& x,
 /// \brief Adds one sample of particles [0, p.count()) to `sums` (grid.cellCount() x CellSum::Size)
 /// on `grid` (PolarGrid or CartesianGrid). `list` and `walls` hold the contact forces of the
 /// current positions (as DemSystem leaves them between steps); `wallSet` and `periodic` are the
-/// system's.
+/// system's. Blocky particles pass their contact virials (n x 4: xx, xy, yx, yy, from
+/// computeBlockyContactForces()) and true areas; empty Views: discs (virial from the stored
+/// forces and the centre geometry, area pi r^2).
 template <class ExecutionSpace, class MemorySpace, class Grid>
 void depositCells(ExecutionSpace const& space, Grid const& grid,
                   ParticleArrays<MemorySpace> const& p, NeighborList<MemorySpace> const& list,
                   WallContactState<MemorySpace> const& walls, WallSet const& wallSet,
-                  PeriodicX const& periodic, Kokkos::View<double**, MemorySpace> const& sums) {
+                  PeriodicX const& periodic, Kokkos::View<double**, MemorySpace> const& sums,
+                  Kokkos::View<double* [4], MemorySpace> const& blockyVirial = {},
+                  Kokkos::View<double*, MemorySpace> const& blockyArea = {}) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::dem::cg::depositCells: particle memory not accessible");
   auto x = p.position;
@@ -72,6 +78,11 @@ void depositCells(ExecutionSpace const& space, Grid const& grid,
   auto wallFn = walls.normalForce;
   auto wallFt = walls.tangentialForce;
   auto kind = p.kind;
+  const bool blocky = blockyVirial.extent(0) >= p.count() && blockyArea.extent(0) >= p.count();
+  if (!blocky && (blockyVirial.extent(0) > 0 || blockyArea.extent(0) > 0)) {
+    throw std::invalid_argument("hikiln::dem::cg::depositCells: blocky virials and areas must "
+                                "both cover every particle");
+  }
   Kokkos::parallel_for(
       "hikiln::dem::cg::depositCells", Kokkos::RangePolicy<ExecutionSpace>(space, 0, p.count()),
       KOKKOS_LAMBDA(int i) {
@@ -80,9 +91,17 @@ void depositCells(ExecutionSpace const& space, Grid const& grid,
         }
         const int c = grid.cellOf(x(i, 0), x(i, 1));
         const double m = mass(i), r = radius(i), vx = v(i, 0), vy = v(i, 1);
-        const Tensor2 w = particleVirial(i, x, radius, list, wallFn, wallFt, wallSet, periodic);
+        Tensor2 w;
+        if (blocky) {
+          w.xx = blockyVirial(i, 0);
+          w.xy = blockyVirial(i, 1);
+          w.yx = blockyVirial(i, 2);
+          w.yy = blockyVirial(i, 3);
+        } else {
+          w = particleVirial(i, x, radius, list, wallFn, wallFt, wallSet, periodic);
+        }
         Kokkos::atomic_add(&sums(c, CellSum::Count), 1.0);
-        Kokkos::atomic_add(&sums(c, CellSum::Area), constants::pi * r * r);
+        Kokkos::atomic_add(&sums(c, CellSum::Area), blocky ? blockyArea(i) : constants::pi * r * r);
         Kokkos::atomic_add(&sums(c, CellSum::Mass), m);
         Kokkos::atomic_add(&sums(c, CellSum::MomentumX), m * vx);
         Kokkos::atomic_add(&sums(c, CellSum::MomentumY), m * vy);

@@ -137,6 +137,7 @@ void permuteContactRows(ExecutionSpace const& space, PermutationView const& perm
   const bool forces = src.normalForce.extent(0) >= n && dst.normalForce.extent(0) >= n &&
                       src.tangentialForce.extent(0) >= n && dst.tangentialForce.extent(0) >= n;
   const bool wallForces = wallSrc.normalForce.extent(0) >= n && wallDst.normalForce.extent(0) >= n;
+  const bool angles = src.normalAngle.extent(0) >= n && dst.normalAngle.extent(0) >= n;
 // GCC 12 at -O3 flags the guarded wall-force copy for empty (unallocated) force views as out of
 // bounds although `wallForces` is false then: a known false positive of -Warray-bounds.
 #if defined(__GNUC__) && !defined(__clang__)
@@ -158,6 +159,9 @@ void permuteContactRows(ExecutionSpace const& space, PermutationView const& perm
           if (forces) {
             dst.normalForce(k, m) = src.normalForce(o, m);
             dst.tangentialForce(k, m) = src.tangentialForce(o, m);
+          }
+          if (angles) {
+            dst.normalAngle(k, m) = src.normalAngle(o, m);
           }
         }
         for (int m = 0; m < wallSlotCount; ++m) {

@@ -1,7 +1,7 @@
 /// \file Blocky.cpp
 /// \brief Throughput of blocky (superquadric) particles against the disc engine on the same
-/// packing: full time steps of a rotating drum bed (BlockySystem::advance with N = 2, 4, 6 and
-/// DemSystem::advance with the same discs), 1e3 and 1e4 particles.
+/// packing: full time steps of a rotating drum bed (DemSystem::advance (blocky) with N = 2, 4, 6
+/// and DemSystem::advance with the same discs), 1e3 and 1e4 particles.
 ///
 /// The bed: particles of bounding radius 10 mm (+-5 %) on a hexagonal lattice of pitch 2.05
 /// bounding radii at the bottom of a drum whose radius grows with sqrt(N) for a 20 % fill, random
@@ -15,7 +15,6 @@
 #include "kernels/dem/BlockyArrays.hpp"
 #include "perf/harness/Backends.hpp"
 #include "perf/harness/Timing.hpp"
-#include "solvers/dem/BlockySystem.hpp"
 #include "solvers/dem/DemSystem.hpp"
 
 #include <Kokkos_Core.hpp>
@@ -108,7 +107,7 @@ template <class ExecutionSpace>
 void benchmarkBlocky(Backend<ExecutionSpace>, benchmark::State& state, double blockiness) {
   const auto n = static_cast<std::size_t>(state.range(0));
   const Bed bed = makeBed(n, blockiness);
-  dem::BlockySystem<ExecutionSpace> system(blockyDrumConfig(drumRadiusFor(n)));
+  dem::DemSystem<ExecutionSpace> system(blockyDrumConfig(drumRadiusFor(n)));
   system.setParticles(bed.particles, bed.shapes);
   timeSteps(system, system.executionSpace(), state);
 }

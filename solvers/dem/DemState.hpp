@@ -33,6 +33,14 @@ struct DemState {
   std::vector<std::int64_t> contactId;
   std::vector<std::int64_t> contactNeighborId;
   std::vector<double> contactShear;
+  /// Blocky systems only (all empty for discs): orientation (rad) and shape (semi-axes a, b and
+  /// blockiness N) per particle, and per contact entry the pair's stored search direction
+  /// (NeighborList::normalAngle; entries exist where the shear or this is non-zero).
+  std::vector<double> orientation;
+  std::vector<double> shapeA;
+  std::vector<double> shapeB;
+  std::vector<double> shapeN;
+  std::vector<double> contactAngle;
 
   /// \brief Number of particles.
   std::size_t size() const { return id.size(); }

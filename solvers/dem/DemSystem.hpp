@@ -37,8 +37,17 @@
 ///   are rotated rigidly with the drum from their home positions (their positions at
 ///   setParticles) by the shell angle, the sum of omega dt over the steps (kept on the host, so
 ///   the same on every backend). Both act on free particles as bodies of infinite mass.
+/// - Blocky particles (setParticles() with shapes): each particle is a superquadric with an
+///   orientation (BlockyArrays next to the particle arrays, radius = bounding radius); the step
+///   then also turns the orientations (theta += dt omega^(n+1/2)) and takes the forces of
+///   BlockyForceKernel.hpp; the list keeps each pair's last normal or separating axis
+///   (NeighborList::normalAngle) as the history, carried over rebuilds, reorders and checkpoints.
+///   Shell-attached particles must be circles then. An all-circle blocky system follows the disc
+///   system bitwise.
 
 #include "kernels/common/Compat.hpp"
+#include "kernels/dem/BlockyArrays.hpp"
+#include "kernels/dem/BlockyForceKernel.hpp"
 #include "kernels/dem/CellGrid.hpp"
 #include "kernels/dem/ContactLaw.hpp"
 #include "kernels/dem/Diagnostics.hpp"
@@ -49,6 +58,7 @@
 #include "kernels/dem/Periodic.hpp"
 #include "kernels/dem/PrescribedMotion.hpp"
 #include "kernels/dem/Reorder.hpp"
+#include "kernels/dem/Superquadric.hpp"
 #include "kernels/dem/TimeStep.hpp"
 #include "kernels/dem/Walls.hpp"
 #include "solvers/dem/DemState.hpp"
@@ -60,6 +70,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -125,6 +136,7 @@ public:
   using memory_space = typename ExecutionSpace::memory_space;
   using particles_type = ParticleArrays<memory_space>;
   using host_particles_type = ParticleArrays<Kokkos::HostSpace>;
+  using host_blocky_type = BlockyArrays<Kokkos::HostSpace>;
 
   /// \brief A system with no particles yet; validates the configuration.
   explicit DemSystem(DemConfig config, ExecutionSpace space = ExecutionSpace())
@@ -142,25 +154,13 @@ public:
   /// ids), clears all contact history, resets the clock, builds the list and evaluates the initial
   /// forces (history not advanced, as LAMMPS's set-up). Fixed particles get v = omega = 0, shell
   /// particles the shell's motion; their positions now are their home positions (shell angle 0).
-  void setParticles(const host_particles_type& given) {
-    host_particles_type host = copyParticles<Kokkos::HostSpace>(given); // placeNonFree edits it
-    validateHost(host);
-    setShellHome(host, 0.0, {});
-    placeNonFree(host);
-    _particles = copyParticles<memory_space>(host);
-    updateInverseMassProperties(_space, _particles);
-    allocateContactState(
-        NeighborList<memory_space>::lean(_particles.capacity(), initialWidth(), _space));
-    Kokkos::deep_copy(_space, _particles.force, 0.0);
-    Kokkos::deep_copy(_space, _particles.torque, 0.0);
-    _step = 0;
-    _time = 0.0;
-    configureFromParticles(host);
-    rebuild(sortDue());
-    ForceSettings setup = _settings;
-    setup.updateHistory = false;
-    computeForces(_space, _particles, _list, _walls, setup);
-    _space.fence();
+  void setParticles(const host_particles_type& given) { setParticlesAndShapes(given, nullptr); }
+
+  /// \brief setParticles() for blocky particles: `shapes` holds each particle's outline and
+  /// orientation in the same order (radius = bounding radius, mass and inertia set to match, e.g.
+  /// by assignBlockyMassPropertiesHost()).
+  void setParticles(const host_particles_type& given, const host_blocky_type& shapes) {
+    setParticlesAndShapes(given, &shapes);
   }
 
   /// \brief Advances one time step (its second half kick is applied by the next step or the next
@@ -173,11 +173,14 @@ public:
     }
     const double d2 = initialIntegrate(_space, _particles, _settings.dt, _settings.periodic,
                                        _buildPosition, _pendingHalfDt, _shell, _shellHome);
+    if (_isBlocky) {
+      advanceOrientation(_space, _particles, _blocky, _settings.dt);
+    }
     _pendingHalfDt = 0.0;
     if (_rebuildRequested || d2 > 0.25 * _skin * _skin) {
       rebuild(sortDue());
     }
-    computeForces(_space, _particles, _list, _walls, _settings);
+    evaluateForces(_settings);
     _pendingHalfDt = 0.5 * _settings.dt;
     ++_step;
     ++_version;
@@ -239,6 +242,7 @@ public:
     const auto count = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, _list.count);
     const auto index = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, _list.index);
     const auto shear = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, _list.shear);
+    const auto angle = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, _list.normalAngle);
     DemState s;
     s.step = _step;
     s.time = _time;
@@ -266,11 +270,24 @@ public:
       }
       const int rowCount = std::min(count(i), _list.capacity());
       for (int k = 0; k < rowCount; ++k) {
-        if (shear(i, k) != 0.0) {
+        const double a = _isBlocky ? angle(i, k) : 0.0;
+        if (shear(i, k) != 0.0 || a != 0.0) {
           s.contactId.push_back(p.id(i));
           s.contactNeighborId.push_back(p.id(index(i, k)));
           s.contactShear.push_back(shear(i, k));
+          if (_isBlocky) {
+            s.contactAngle.push_back(a);
+          }
         }
+      }
+    }
+    if (_isBlocky) {
+      const auto b = copyBlocky<Kokkos::HostSpace>(_blocky);
+      for (std::size_t i = 0; i < n; ++i) {
+        s.orientation.push_back(b.orientation(i));
+        s.shapeA.push_back(b.shape(i).a);
+        s.shapeB.push_back(b.shape(i).b);
+        s.shapeN.push_back(b.shape(i).n);
       }
     }
     return s;
@@ -295,6 +312,11 @@ public:
     if (s.contactNeighborId.size() != s.contactId.size() ||
         s.contactShear.size() != s.contactId.size()) {
       bad("inconsistent contact history sizes");
+    }
+    const bool blocky = !s.orientation.empty();
+    if (blocky && (s.orientation.size() != n || s.shapeA.size() != n || s.shapeB.size() != n ||
+                   s.shapeN.size() != n || s.contactAngle.size() != s.contactId.size())) {
+      bad("inconsistent blocky shape or contact direction sizes");
     }
     host_particles_type host(n, n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -329,9 +351,11 @@ public:
       }
       return order[static_cast<std::size_t>(it - sortedIds.begin())];
     };
-    std::vector<std::vector<std::pair<std::int64_t, double>>> rows(n);
+    // (neighbour id, shear, direction) per row
+    std::vector<std::vector<std::tuple<std::int64_t, double, double>>> rows(n);
     for (std::size_t c = 0; c < s.contactId.size(); ++c) {
-      rows[rowOf(s.contactId[c])].emplace_back(s.contactNeighborId[c], s.contactShear[c]);
+      rows[rowOf(s.contactId[c])].emplace_back(s.contactNeighborId[c], s.contactShear[c],
+                                               blocky ? s.contactAngle[c] : 0.0);
     }
     std::size_t seedWidth = static_cast<std::size_t>(initialWidth());
     for (auto& r : rows) {
@@ -343,17 +367,35 @@ public:
     }
     // rows hold indices in this (the imported) particle order, sorted by neighbour id
     auto seedHost = NeighborList<Kokkos::HostSpace>::lean(n, static_cast<int>(seedWidth));
+    if (blocky) {
+      seedHost.allocateNormalAngle();
+    }
     for (std::size_t i = 0; i < n; ++i) {
       seedHost.count(i) = static_cast<int>(rows[i].size());
       for (std::size_t k = 0; k < rows[i].size(); ++k) {
-        seedHost.index(i, k) = static_cast<int>(rowOf(rows[i][k].first));
-        seedHost.shear(i, k) = rows[i][k].second;
+        seedHost.index(i, k) = static_cast<int>(rowOf(std::get<0>(rows[i][k])));
+        seedHost.shear(i, k) = std::get<1>(rows[i][k]);
+        if (blocky) {
+          seedHost.normalAngle(i, k) = std::get<2>(rows[i][k]);
+        }
       }
     }
-    auto seed = NeighborList<memory_space>::lean(n, static_cast<int>(seedWidth), _space);
+    host_blocky_type shapes;
+    if (blocky) {
+      shapes = host_blocky_type(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        shapes.orientation(i) = s.orientation[i];
+        shapes.shape(i) = SuperquadricShape{s.shapeA[i], s.shapeB[i], s.shapeN[i]};
+      }
+    }
+    adoptShapes(host, blocky ? &shapes : nullptr);
+    auto seed = leanList(n, static_cast<int>(seedWidth));
     Kokkos::deep_copy(seed.count, seedHost.count);
     Kokkos::deep_copy(seed.index, seedHost.index);
     Kokkos::deep_copy(seed.shear, seedHost.shear);
+    if (blocky) {
+      Kokkos::deep_copy(seed.normalAngle, seedHost.normalAngle);
+    }
 
     _particles = copyParticles<memory_space>(host);
     updateInverseMassProperties(_space, _particles);
@@ -377,7 +419,14 @@ public:
   EnergyReport energy() const {
     requireParticles();
     synchronize();
-    return computeEnergy(_space, _particles, _list, _walls, _settings);
+    EnergyReport e = computeEnergy(_space, _particles, _list, _walls, _settings);
+    if (_isBlocky) { // elastic parts from the blocky contact geometry
+      const auto elastic =
+          blockyElasticEnergy(_space, _particles, _blocky, _list, _walls, _settings);
+      e.elasticPair = elastic.first;
+      e.elasticWall = elastic.second;
+    }
+    return e;
   }
   /// \brief Linear and angular momentum of the current state.
   MomentumReport momentum() const {
@@ -418,6 +467,27 @@ public:
   /// \brief The neighbour list as the step uses it (count, index, shear; no optional views).
   /// Indices refer to particles() order; ids are particles().id(index(i, k)).
   const NeighborList<memory_space>& neighborRows() const { return _list; }
+  /// \brief True for a system of blocky particles (setParticles() with shapes).
+  bool blocky() const { return _isBlocky; }
+  /// \brief Host copy of the shapes and orientations, in hostParticles() order (capacity 0 for a
+  /// disc system).
+  host_blocky_type hostShapes() const {
+    _space.fence();
+    return _isBlocky ? copyBlocky<Kokkos::HostSpace>(_blocky) : host_blocky_type();
+  }
+  /// \brief Blocky systems: each particle's contact virial sum (x_c - x_i) (x) f_i (n x 4: xx, xy,
+  /// yx, yy) of the current state, evaluated with neighborList()'s forces. Empty for discs (their
+  /// virial follows from the stored forces and the centres, CoarseGrainContact.hpp).
+  const Kokkos::View<double* [4], memory_space>& contactVirial() const {
+    requireParticles();
+    refreshContactViews();
+    return _publishedVirial;
+  }
+  /// \brief Blocky systems: each particle's true area (m^2), in particles() order; empty for discs
+  /// (pi r^2).
+  const Kokkos::View<double*, memory_space>& particleAreas() const {
+    return _area;
+  }
   /// \brief Bytes held by the system's Views (particles, list, walls, bins, build positions and
   /// any optional views allocated by neighborList()/wallContacts()).
   std::size_t memoryBytes() const {
@@ -436,6 +506,8 @@ public:
     total += bytes(_published.neighborId) + bytes(_published.normalForce) +
              bytes(_published.tangentialForce) + bytes(_publishedWalls.normalForce) +
              bytes(_publishedWalls.tangentialForce);
+    total += bytes(_blocky.orientation) + bytes(_blocky.shape) + bytes(_blocky.axis) +
+             bytes(_area) + bytes(_publishedVirial);
     return total;
   }
   /// \brief Coefficients, walls, gravity and dt as the kernels see them.
@@ -462,6 +534,78 @@ public:
   std::int64_t sortCount() const { return _sortCount; }
 
 private:
+  void setParticlesAndShapes(const host_particles_type& given, const host_blocky_type* shapes) {
+    host_particles_type host = copyParticles<Kokkos::HostSpace>(given); // placeNonFree edits it
+    validateHost(host);
+    adoptShapes(host, shapes);
+    setShellHome(host, 0.0, {});
+    placeNonFree(host);
+    _particles = copyParticles<memory_space>(host);
+    updateInverseMassProperties(_space, _particles);
+    allocateContactState(leanList(_particles.capacity(), initialWidth()));
+    Kokkos::deep_copy(_space, _particles.force, 0.0);
+    Kokkos::deep_copy(_space, _particles.torque, 0.0);
+    _step = 0;
+    _time = 0.0;
+    configureFromParticles(host);
+    rebuild(sortDue());
+    ForceSettings setup = _settings;
+    setup.updateHistory = false;
+    evaluateForces(setup);
+    _space.fence();
+  }
+
+  // Takes the shapes of the host set h (nullptr: discs): device copy sized like h, axes, areas.
+  void adoptShapes(const host_particles_type& h, const host_blocky_type* shapes) {
+    _isBlocky = shapes != nullptr;
+    _publishedVirial = Kokkos::View<double* [4], memory_space>();
+    if (!_isBlocky) {
+      _blocky = BlockyArrays<memory_space>();
+      _area = Kokkos::View<double*, memory_space>();
+      return;
+    }
+    const std::size_t n = h.count();
+    if (shapes->capacity() < n) {
+      throw std::invalid_argument("hikiln::dem::DemSystem: fewer shapes than particles");
+    }
+    host_blocky_type b(h.capacity());
+    Kokkos::View<double*, Kokkos::HostSpace> area("hikiln::dem::particleAreaHost", h.capacity());
+    for (std::size_t i = 0; i < n; ++i) {
+      const SuperquadricShape& s = shapes->shape(i);
+      const std::string who = "hikiln::dem::DemSystem: particle " + std::to_string(h.id(i));
+      validateShape(s, who);
+      if (h.kind(i) == static_cast<std::uint8_t>(ParticleKind::Shell) && !isCircle(s)) {
+        throw std::invalid_argument(who + ": shell-attached particles must be circles");
+      }
+      b.shape(i) = s;
+      b.orientation(i) = shapes->orientation(i);
+      area(i) = superquadricArea(s);
+    }
+    _blocky = copyBlocky<memory_space>(b);
+    updateOrientationAxes(_space, _blocky, n);
+    _area = Kokkos::View<double*, memory_space>(
+        Kokkos::view_alloc(_space, std::string("hikiln::dem::particleArea")), h.capacity());
+    Kokkos::deep_copy(_space, _area, area);
+  }
+
+  // An empty list of `rows` rows `width` wide (with the pair directions for blocky systems).
+  NeighborList<memory_space> leanList(std::size_t rows, int width) const {
+    auto list = NeighborList<memory_space>::lean(rows, width, _space);
+    if (_isBlocky) {
+      list.allocateNormalAngle(_space);
+    }
+    return list;
+  }
+
+  // Contact, wall and gravity forces of the current state into the particle arrays.
+  void evaluateForces(const ForceSettings& settings) {
+    if (_isBlocky) {
+      computeBlockyForces(_space, _particles, _blocky, _list, _walls, settings);
+    } else {
+      computeForces(_space, _particles, _list, _walls, settings);
+    }
+  }
+
   void requireParticles() const {
     if (!_ready) {
       throw std::logic_error("hikiln::dem::DemSystem: no particles set");
@@ -623,7 +767,17 @@ private:
     }
     // a free kernel function: CUDA extended lambdas may not sit in a private member function
     fillNeighborIds(_space, _particles.count(), _list, _particles.id, _published.neighborId);
-    computeContactForces(_space, _particles, _published, _publishedWalls, _settings);
+    if (_isBlocky) {
+      if (_publishedVirial.extent(0) != _list.rows()) {
+        _publishedVirial = Kokkos::View<double* [4], memory_space>(
+            Kokkos::view_alloc(_space, std::string("hikiln::dem::contactVirial")), _list.rows());
+      }
+      _published.normalAngle = _list.normalAngle;
+      computeBlockyContactForces(_space, _particles, _blocky, _published, _publishedWalls,
+                                 _settings, _publishedVirial);
+    } else {
+      computeContactForces(_space, _particles, _published, _publishedWalls, _settings);
+    }
     _publishedVersion = _version;
   }
 
@@ -662,7 +816,13 @@ private:
     if (sort) {
       // one field at a time; the rows follow with their indices remapped
       permuteParticlesInPlace(_space, _bins.cellParticles, _particles);
-      auto list = NeighborList<memory_space>::lean(_list.rows(), _list.capacity(), _space);
+      if (_isBlocky) {
+        permuteView(_space, _bins.cellParticles, n, _blocky.orientation);
+        permuteView(_space, _bins.cellParticles, n, _blocky.shape);
+        permuteView(_space, _bins.cellParticles, n, _blocky.axis);
+        permuteView(_space, _bins.cellParticles, n, _area);
+      }
+      auto list = leanList(_list.rows(), _list.capacity());
       auto walls = leanWallState(_walls.shear.extent(0));
       permuteContactRows(_space, _bins.cellParticles, n, _list, list, _walls, walls);
       adoptContactState(list, walls);
@@ -680,8 +840,7 @@ private:
       if (maxCount <= _list.capacity()) {
         break;
       }
-      auto wider = NeighborList<memory_space>::lean(
-          _list.rows(), std::min(_config.neighborCapacity, maxCount + 2), _space);
+      auto wider = leanList(_list.rows(), std::min(_config.neighborCapacity, maxCount + 2));
       copyNeighborRows(_space, n, _list, wider);
       adoptContactState(wider, _walls);
     }
@@ -703,6 +862,10 @@ private:
   NeighborList<memory_space> _list;
   WallContactState<memory_space> _walls;
   CellBins<memory_space> _bins;
+  BlockyArrays<memory_space> _blocky;        // blocky systems: shapes and orientations
+  Kokkos::View<double*, memory_space> _area; // blocky systems: true particle areas
+  bool _isBlocky = false;
+  mutable Kokkos::View<double* [4], memory_space> _publishedVirial; // see contactVirial()
   // what neighborList()/wallContacts() hand out: the live rows plus the optional views
   mutable NeighborList<memory_space> _published;
   mutable WallContactState<memory_space> _publishedWalls;

@@ -19,8 +19,27 @@ void require(bool ok, const std::string& what) {
     throw std::invalid_argument("drum fill: " + what);
 }
 
-double discArea(double r) {
-  return pi * r * r;
+// Equal-area radius: the disc radius, or sqrt(A / pi) of a superquadric.
+double sizeRadius(const ParticleArrays<Kokkos::HostSpace>& p,
+                  const BlockyArrays<Kokkos::HostSpace>& shapes, std::size_t i) {
+  return shapes.capacity() > i ? std::sqrt(particleArea(p, shapes, i) / pi) : p.radius(i);
+}
+
+// Circle shapes of the shell discs, shapes of the free particles from their equal-area radii and
+// orientations drawn after all sizes; then the mass properties (radius: the bounding radius).
+BlockyArrays<Kokkos::HostSpace> assignShapes(const ParticleArrays<Kokkos::HostSpace>& p,
+                                             const FillSpec& s, SplitMix64& random) {
+  BlockyArrays<Kokkos::HostSpace> shapes(p.count());
+  for (std::size_t i = 0; i < p.count(); ++i) {
+    const double r = p.radius(i);
+    const bool free = isFree(p.kind(i));
+    shapes.shape(i) = free ? equalAreaShape(s.shape, 2 * r) : SuperquadricShape{r, r, 2.0};
+    shapes.orientation(i) = free ? 2 * pi * random.uniform() : 0.0;
+    shapes.axis(i, 0) = std::cos(shapes.orientation(i));
+    shapes.axis(i, 1) = std::sin(shapes.orientation(i));
+  }
+  assignBlockyMassPropertiesHost(p, shapes, s.density, s.convention, s.thickness);
+  return shapes;
 }
 
 ParticleArrays<Kokkos::HostSpace> subset(const ParticleArrays<Kokkos::HostSpace>& p,
@@ -61,6 +80,12 @@ double segmentHeightForFraction(double radius, double fraction) {
 }
 
 ParticleArrays<Kokkos::HostSpace> generateDrumLattice(const FillSpec& s) {
+  require(!s.shape.superquadric,
+          "superquadric particles need their shapes: generateDrumParticles()");
+  return generateDrumParticles(s).particles;
+}
+
+DrumParticles generateDrumParticles(const FillSpec& s) {
   require(s.drumRadius > 0, "drum radius must be > 0");
   require(s.fill > 0 && s.fill < 1, "fill must be in (0, 1), got " + std::to_string(s.fill));
   require(s.meanDiameter > 0, "mean diameter must be > 0");
@@ -69,8 +94,9 @@ ParticleArrays<Kokkos::HostSpace> generateDrumLattice(const FillSpec& s) {
           "particles must be much smaller than the drum");
   const double dMin = s.meanDiameter * std::max(1 - s.sizeRange, s.minDiameterFraction);
   const double dMax = s.meanDiameter * (1 + s.sizeRange);
-  // Lattice spacing leaves a small gap between the largest discs; rows are sqrt(3)/2 apart.
-  const double spacing = 1.02 * dMax;
+  // Lattice spacing leaves a small gap between the largest bounding circles; rows are sqrt(3)/2
+  // apart.
+  const double spacing = 1.02 * dMax * boundingRadiusRatio(s.shape);
   const double rowHeight = 0.5 * std::sqrt(3.0) * spacing;
   // A settled bed packs to ~0.82 (2D discs); the loose lattice packs less, so it spans more area.
   const double latticePacking = 0.25 * pi * s.meanDiameter * s.meanDiameter / (spacing * rowHeight);
@@ -118,11 +144,16 @@ ParticleArrays<Kokkos::HostSpace> generateDrumLattice(const FillSpec& s) {
     p.id(i) = static_cast<std::int64_t>(i);
     p.kind(i) = static_cast<std::uint8_t>(ParticleKind::Shell);
   }
+  if (s.shape.superquadric) {
+    BlockyArrays<Kokkos::HostSpace> shapes = assignShapes(p, s, random);
+    return {p, shapes};
+  }
   assignMassPropertiesHost(p, s.density, s.convention, s.thickness);
-  return p;
+  return {p, {}};
 }
 
-BedMeasurement measureBed(const ParticleArrays<Kokkos::HostSpace>& p, double R) {
+BedMeasurement measureBed(const ParticleArrays<Kokkos::HostSpace>& p, double R,
+                          const BlockyArrays<Kokkos::HostSpace>& shapes) {
   BedMeasurement m;
   double meanR = 0, reach = R; // reach: the wall, or the inner side of the shell discs
   for (std::size_t i = 0; i < p.count(); ++i) {
@@ -130,8 +161,8 @@ BedMeasurement measureBed(const ParticleArrays<Kokkos::HostSpace>& p, double R) 
       reach = std::min(reach, std::hypot(p.position(i, 0), p.position(i, 1)) - p.radius(i));
       continue;
     }
-    m.solidArea += discArea(p.radius(i));
-    meanR += p.radius(i);
+    m.solidArea += particleArea(p, shapes, i);
+    meanR += sizeRadius(p, shapes, i);
     ++m.count;
   }
   if (m.count == 0)
@@ -145,7 +176,7 @@ BedMeasurement measureBed(const ParticleArrays<Kokkos::HostSpace>& p, double R) 
     if (!isFree(p.kind(i)))
       continue;
     const int b = std::clamp(static_cast<int>((p.position(i, 0) + R) / bin), 0, nb - 1);
-    highest[b] = std::max(highest[b], p.position(i, 1) + p.radius(i));
+    highest[b] = std::max(highest[b], p.position(i, 1) + sizeRadius(p, shapes, i));
   }
   double sum = 0;
   int used = 0;
@@ -161,7 +192,7 @@ BedMeasurement measureBed(const ParticleArrays<Kokkos::HostSpace>& p, double R) 
       continue;
     const double x = p.position(i, 0), y = p.position(i, 1);
     if (x * x + y * y < rIn * rIn && y < hIn)
-      inside += discArea(p.radius(i));
+      inside += particleArea(p, shapes, i);
   }
   const double region = circularSegmentArea(rIn, hIn);
   m.bulkFraction = region > 0 && inside > 0 ? inside / region : 0.0;
@@ -169,8 +200,11 @@ BedMeasurement measureBed(const ParticleArrays<Kokkos::HostSpace>& p, double R) 
   return m;
 }
 
-ParticleArrays<Kokkos::HostSpace> trimToFill(const ParticleArrays<Kokkos::HostSpace>& p, double R,
-                                             double fill, double bulkFraction) {
+namespace {
+// Indices (ascending) of the particles trimToFill() keeps.
+std::vector<std::size_t> keptForFill(const ParticleArrays<Kokkos::HostSpace>& p,
+                                     const BlockyArrays<Kokkos::HostSpace>& shapes, double R,
+                                     double fill, double bulkFraction) {
   require(bulkFraction > 0 && bulkFraction <= 1, "bulk fraction must be in (0, 1]");
   std::vector<std::size_t> order(p.count());
   std::iota(order.begin(), order.end(), 0);
@@ -188,14 +222,27 @@ ParticleArrays<Kokkos::HostSpace> trimToFill(const ParticleArrays<Kokkos::HostSp
   for (std::size_t i : order) {
     if (!isFree(p.kind(i)))
       continue;
-    const double a = discArea(p.radius(i));
+    const double a = particleArea(p, shapes, i);
     if (area + 0.5 * a > target)
       break;
     keep.push_back(i);
     area += a;
   }
   std::sort(keep.begin(), keep.end());
-  return subset(p, keep);
+  return keep;
+}
+} // namespace
+
+ParticleArrays<Kokkos::HostSpace> trimToFill(const ParticleArrays<Kokkos::HostSpace>& p, double R,
+                                             double fill, double bulkFraction) {
+  return subset(p, keptForFill(p, {}, R, fill, bulkFraction));
+}
+
+DrumParticles trimToFill(const DrumParticles& d, double R, double fill, double bulkFraction) {
+  const auto keep = keptForFill(d.particles, d.shapes, R, fill, bulkFraction);
+  if (!d.blocky())
+    return {subset(d.particles, keep), {}};
+  return {subset(d.particles, keep), subsetShapes(d.shapes, keep)};
 }
 
 } // namespace hikiln::dem

@@ -49,10 +49,16 @@ public:
   void sample(const DemSystem<ExecutionSpace>& system, double time) {
     const auto& p = system.particles();
     const ForceSettings& f = system.forceSettings();
+    // blocky particles bring their own contact virials and areas (empty Views for discs)
+    Kokkos::View<double* [4], typename ExecutionSpace::memory_space> virial;
+    if (system.blocky()) {
+      virial = system.contactVirial();
+    }
+    const auto area = system.particleAreas();
     cg::depositCells(_space, _settings.polarGrid(), p, system.neighborList(), system.wallContacts(),
-                     f.walls, f.periodic, _polar);
+                     f.walls, f.periodic, _polar, virial, area);
     cg::depositCells(_space, _settings.cartesianGrid(), p, system.neighborList(),
-                     system.wallContacts(), f.walls, f.periodic, _cartesian);
+                     system.wallContacts(), f.walls, f.periodic, _cartesian, virial, area);
     const double omega = f.walls.drum.angularVelocity;
     const auto host = system.hostParticles();
     cg::ShellBins bins;

@@ -4,7 +4,7 @@
 
 #include "DemTestUtils.hpp"
 #include "kernels/dem/BlockyArrays.hpp"
-#include "solvers/dem/BlockySystem.hpp"
+#include "solvers/dem/DemSystem.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -36,7 +36,7 @@ inline BlockyArrays<Kokkos::HostSpace> blockify(const ParticleArrays<Kokkos::Hos
 /// Orientation of every particle keyed by id.
 template <class System> std::map<std::int64_t, double> orientationById(const System& sys) {
   const auto h = sys.hostParticles();
-  const auto b = sys.hostBlocky();
+  const auto b = sys.hostShapes();
   std::map<std::int64_t, double> out;
   for (std::size_t i = 0; i < h.count(); ++i) {
     out[h.id(i)] = b.orientation(i);

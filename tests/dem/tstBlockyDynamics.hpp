@@ -1,7 +1,7 @@
-// Dynamics of blocky (superquadric) particles (BlockySystem): an all-circle system follows the
-// disc engine bitwise; an elastic frictionless blocky bed in a drum keeps its energy; an isolated
-// frictional cluster keeps linear and angular momentum; the backend at any thread count matches
-// Kokkos::Serial bitwise; on an incline a block sticks where a disc rolls and slides at the
+// Dynamics of blocky (superquadric) particles (DemSystem with shapes): an all-circle system follows
+// the disc engine bitwise; an elastic frictionless blocky bed in a drum keeps its energy; an
+// isolated frictional cluster keeps linear and angular momentum; the backend at any thread count
+// matches Kokkos::Serial bitwise; on an incline a block sticks where a disc rolls and slides at the
 // Coulomb rate beyond the friction angle; a collapsed column of blocks stands steeper than one of
 // discs.
 #include "BlockyTestUtils.hpp"
@@ -45,7 +45,7 @@ TEST(TEST_CATEGORY, blocky_circles_reproduce_disc_engine) {
   const auto shapes = test::blockify(h, 2.0, 1.0, 0); // circles: radius, mass, inertia as discs
   DemSystem<space> disc(drumConfig());
   disc.setParticles(h);
-  BlockySystem<space> blocky(drumConfig());
+  DemSystem<space> blocky(drumConfig());
   blocky.setParticles(h, shapes);
   ASSERT_EQ(disc.timeStep(), blocky.timeStep());
   for (int block = 0; block < 4; ++block) {
@@ -74,7 +74,7 @@ TEST(TEST_CATEGORY, blocky_energy_bounded_elastic_drum) {
     shapes.shape(i).n = 6.0;
   }
   assignBlockyMassPropertiesHost(h, shapes, 2700.0, MassConvention::Disc, 0.01);
-  BlockySystem<space> sys(cfg);
+  DemSystem<space> sys(cfg);
   sys.setParticles(h, shapes);
   double massSum = 0.0;
   for (std::size_t i = 0; i < h.count(); ++i) {
@@ -107,7 +107,7 @@ TEST(TEST_CATEGORY, blocky_momentum_conserved_isolated_cluster) {
     h.velocity(i, 1) -= 4.0 * h.position(i, 1);
   }
   const auto shapes = test::blockify(h, 4.0, 2.0, 5);
-  BlockySystem<space> sys(cfg);
+  DemSystem<space> sys(cfg);
   sys.setParticles(h, shapes);
   const MomentumReport p0 = sys.momentum();
   double scale = 0.0, angularScale = 0.0;
@@ -135,8 +135,8 @@ TEST(TEST_CATEGORY, blocky_momentum_conserved_isolated_cluster) {
 TEST(TEST_CATEGORY, blocky_thread_count_independent) {
   auto h = drumBed(150, 7);
   const auto shapes = test::blockify(h, 4.0, 1.5, 8);
-  BlockySystem<space> sys(drumConfig());
-  BlockySystem<Kokkos::Serial> reference(drumConfig());
+  DemSystem<space> sys(drumConfig());
+  DemSystem<Kokkos::Serial> reference(drumConfig());
   sys.setParticles(h, shapes);
   reference.setParticles(h, shapes);
   sys.advance(1500);
@@ -158,6 +158,33 @@ TEST(TEST_CATEGORY, blocky_thread_count_independent) {
   EXPECT_GT(sys.rebuildCount(), 2);
 }
 
+// exportState()/importState() of a blocky bed (reordered by cell along the way) continue bitwise:
+// positions, velocities, orientations and the pair directions kept as history.
+TEST(TEST_CATEGORY, blocky_restart_continues_bitwise) {
+  auto h = drumBed(150, 11);
+  const auto shapes = test::blockify(h, 6.0, 1.3, 12);
+  DemConfig cfg = drumConfig();
+  cfg.sortEveryRebuilds = 2;
+  DemSystem<space> original(cfg);
+  original.setParticles(h, shapes);
+  original.advance(900);
+  const DemState state = original.exportState();
+  ASSERT_EQ(state.orientation.size(), state.size());
+  ASSERT_EQ(state.contactAngle.size(), state.contactId.size());
+  DemSystem<space> restarted(cfg);
+  restarted.importState(state);
+  ASSERT_TRUE(restarted.blocky());
+  original.advance(900);
+  restarted.advance(900);
+  test::expectBitwiseEqual(test::byId(original), test::byId(restarted));
+  const auto ta = test::orientationById(original), tb = test::orientationById(restarted);
+  for (const auto& [id, angle] : ta) {
+    EXPECT_EQ(angle, tb.at(id)) << "id " << id;
+  }
+  EXPECT_GT(original.sortCount(), 2);
+  EXPECT_GT(original.energy().elasticPair, 0.0);
+}
+
 // One particle on the floor y = 0 under gravity tilted by alpha (down-slope along +x) for 0.3 s;
 // returns the distance it moved along x.
 double slopeTravel(const SuperquadricShape& shape, double alphaDegrees) {
@@ -172,7 +199,7 @@ double slopeTravel(const SuperquadricShape& shape, double alphaDegrees) {
   assignBlockyMassPropertiesHost(h, b, 2700.0, MassConvention::Disc, 0.01);
   // resting on its flat side, pressed in by its weight
   h.position(0, 1) = shape.b - h.mass(0) * g * std::cos(alpha) / cfg.wallContact.normalStiffness;
-  BlockySystem<space> sys(cfg);
+  DemSystem<space> sys(cfg);
   sys.setParticles(h, b);
   sys.advance(static_cast<std::int64_t>(0.3 / sys.timeStep()));
   return sys.hostParticles().position(0, 0);
@@ -227,7 +254,7 @@ Heap collapsedColumn(double blockiness) {
     h.position(k, 1) = (row + 0.5) * pitch;
   }
   const auto shapes = test::blockify(h, blockiness, 1.0, 6, 2500.0, 2.0 * r);
-  BlockySystem<space> sys(cfg);
+  DemSystem<space> sys(cfg);
   sys.setParticles(h, shapes);
   sys.advance(static_cast<std::int64_t>(0.8 / sys.timeStep()));
   const auto p = sys.hostParticles();

@@ -230,7 +230,8 @@ TEST(TEST_CATEGORY, dem_neighbor_history_follows_ids_through_reordering) {
 }
 
 // The optional second history (normalAngle, blocky pairs) follows the pair like shear through an
-// in-place rebuild after a move and through widening (copyNeighborRows), as BlockySystem uses it.
+// in-place rebuild after a move and through widening (copyNeighborRows), as DemSystem uses it for
+// blocky particles.
 TEST(TEST_CATEGORY, dem_neighbor_normal_angle_carried_like_shear) {
   const int n = 301;
   auto h = randomParticles(n, 12);
