@@ -18,6 +18,7 @@
 
 #include "kernels/common/Compat.hpp"
 #include "kernels/dem/BlockyArrays.hpp"
+#include "kernels/dem/CoarseGrainContact.hpp"
 #include "kernels/dem/ContactLaw.hpp"
 #include "kernels/dem/ForceKernel.hpp"
 #include "kernels/dem/NeighborList.hpp"
@@ -108,8 +109,8 @@ template <class MemorySpace> struct BlockyContacts {
       fx = -c.normal * frame.nx + c.tangential * (-frame.ny);
       fy = -c.normal * frame.ny + c.tangential * frame.nx;
       t = ri * c.tangential + c.rollingTorque;
-      lx = (ri - 0.5 * frame.overlap) * frame.nx;
-      ly = (ri - 0.5 * frame.overlap) * frame.ny;
+      lx = cg::contactBranchLength(ri, frame.overlap) * frame.nx; // the disc coarse-graining's
+      ly = cg::contactBranchLength(ri, frame.overlap) * frame.ny;
       return true;
     }
     const bool iFirst = id(i) < id(j);
@@ -163,8 +164,8 @@ template <class MemorySpace> struct BlockyContacts {
     fy = -c.normal * frame.ny + c.tangential * frame.nx;
     if (isCircle(si)) {
       t = ri * c.tangential + c.rollingTorque;
-      lx = (ri - 0.5 * frame.overlap) * frame.nx;
-      ly = (ri - 0.5 * frame.overlap) * frame.ny;
+      lx = cg::contactBranchLength(ri, frame.overlap) * frame.nx; // the disc coarse-graining's
+      ly = cg::contactBranchLength(ri, frame.overlap) * frame.ny;
     } else {
       t = lx * fy - ly * fx + c.rollingTorque;
     }
