@@ -82,8 +82,9 @@ if [ "$found" != "$KOKKOS_VERSION" ]; then
 fi
 say "Kokkos source version: $found"
 
+# The build folder is kept until the install completes, so an interrupted build (a CI time limit, a
+# closed session) resumes where it stopped on the next run instead of starting over.
 build=$cache/build-kokkos-$variant
-rm -rf "$build"
 mkdir -p "$build"
 kokkos_src=$src/packages/kokkos
 common=(-G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$prefix" -DBUILD_SHARED_LIBS=OFF
@@ -91,6 +92,8 @@ common=(-G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$prefix" -DB
 if [ "$variant" = cuda ]; then
   # Three patches for CUDA 13 (see ../shared/design/architecture.md), applied to a private copy.
   kokkos_src=$build/kokkos-src
+  if [ ! -f "$kokkos_src/.hikiln-patched" ]; then
+  rm -rf "$kokkos_src"
   cp -r "$src/packages/kokkos" "$kokkos_src"
   sed -i 's/default_arch="sm_35"/default_arch="sm_80"/' "$kokkos_src/bin/nvcc_wrapper"
   # half_t on CUDA: its cuda_fp16 conversions no longer compile with CUDA 13 -> use the generic half.
@@ -107,6 +110,8 @@ for f in root.rglob('*.cpp'):
     if n != t:
         f.write_text(n); print(f'[setup-deps] patched cudaMemPrefetchAsync in {f.name}')
 PY
+  touch "$kokkos_src/.hikiln-patched"
+  fi
   backend=(-DKokkos_ENABLE_CUDA=ON -DKokkos_ENABLE_OPENMP=ON -DKokkos_ENABLE_SERIAL=ON -DKokkos_ARCH_AMPERE80=ON
            -DKokkos_ENABLE_CUDA_LAMBDA=ON -DCMAKE_CXX_COMPILER="$kokkos_src/bin/nvcc_wrapper")
   kk_backend=(-DKokkosKernels_INST_EXECSPACE_SERIAL=OFF -DKokkosKernels_INST_EXECSPACE_OPENMP=OFF

@@ -153,6 +153,7 @@ int runContinuum(ContinuumRunOptions const& o) {
   const double solids0 = solver.solids();
   const double heat0 = solver.heat();
   double worstSolids = 0.0, worstHeat = 0.0, phiLo = 0.0, phiHi = 0.0, slipSum = 0.0;
+  int mostHeatSubsteps = 0;
   double minDt = 1e300, maxDt = 0.0, maxDivergence = 0.0;
   std::int64_t steps = 0, slipSamples = 0, viscousIterations = 0, pressureIterations = 0;
   std::map<std::string, std::int64_t> limits;
@@ -185,6 +186,7 @@ int runContinuum(ContinuumRunOptions const& o) {
     worstSolids = std::max(worstSolids, std::fabs(r.solidsAfter - r.solidsBefore) / solids0);
     if (s.params.energy && r.heatBefore != 0.0) {
       worstHeat = std::max(worstHeat, std::fabs(r.heatAfter - r.heatBefore) / r.heatBefore);
+      mostHeatSubsteps = std::max(mostHeatSubsteps, r.heatSubsteps);
     }
     spdlog::debug("t {:.4f} s, dt {:.3g} s ({}), iterations viscous {} pressure {}", solver.time(),
                   dt, reason, r.viscous.iterations, r.pressure.iterations);
@@ -236,6 +238,7 @@ int runContinuum(ContinuumRunOptions const& o) {
   if (s.params.energy) {
     summary["heat_relative_change_total"] = (solver.heat() - heat0) / heat0;
     summary["heat_relative_change_worst_step"] = worstHeat;
+    summary["heat_advection_substeps_max"] = mostHeatSubsteps;
   }
   summary["mean_viscous_iterations"] = steps > 0 ? double(viscousIterations) / steps : 0.0;
   summary["mean_pressure_iterations"] = steps > 0 ? double(pressureIterations) / steps : 0.0;

@@ -19,4 +19,11 @@ struct DrumRunOptions {
 /// checkpoints, summary.json. Returns the exit code; bad input throws with file/key/reason.
 int runDrum(const DrumRunOptions& options);
 
+/// \brief Runs several slices (the cases of a sweep) with their rotation batched: each is set up
+/// (or restored) as runDrum() does, then the slices that can (disc particles, no heat, no rough
+/// drum, the first batchable slice's time step) rotate together as one DemBatch
+/// (solvers/dem/DemBatch.hpp), each writing its own outputs, bitwise the same trajectories as
+/// alone; the others then run alone. Returns the exit code.
+int runDrumBatch(const std::vector<DrumRunOptions>& runs);
+
 } // namespace hikiln::dem

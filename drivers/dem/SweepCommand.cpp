@@ -21,6 +21,7 @@ struct SweepOptions {
   std::string output;
   std::vector<std::string> overrides;
   std::vector<std::string> only;
+  bool batch = false;
 };
 
 bool finished(const fs::path& dir) {
@@ -61,6 +62,7 @@ int runSweep(const SweepOptions& o) {
   const fs::path out(o.output);
   fs::create_directories(out);
   int done = 0, ran = 0;
+  std::vector<dem::DrumRunOptions> pending; // --batch: run together at the end
   for (const auto& c : study.cases) {
     if (!o.only.empty() && std::find(o.only.begin(), o.only.end(), c.name) == o.only.end())
       continue;
@@ -77,10 +79,16 @@ int runSweep(const SweepOptions& o) {
     run.restart = fs::exists(dir / "checkpoint.h5");
     spdlog::info("sweep: case '{}' ({}){}", c.name, fmt::join(c.overrides, " "),
                  run.restart ? ", resuming from its checkpoint" : "");
-    dem::runDrum(run);
     ++ran;
+    if (o.batch) {
+      pending.push_back(run);
+      continue;
+    }
+    dem::runDrum(run);
     writeTable(out, study);
   }
+  if (!pending.empty())
+    dem::runDrumBatch(pending);
   writeTable(out, study);
   spdlog::info("sweep: {} cases run, {} already done; table in {}", ran, done,
                (out / "sweep.csv").string());
@@ -99,6 +107,10 @@ void addSweepCommand(CLI::App& app, Action& action) {
       ->required();
   cmd->add_option("--set", o->overrides, "Override a key in every case (repeatable)");
   cmd->add_option("--only", o->only, "Run only these cases (repeatable)");
+  cmd->add_flag("--batch", o->batch,
+                "Rotate the cases together as one batch (one set of kernel launches for all "
+                "slices; disc cases without heat or rough drum, sharing one time step; the others "
+                "run alone). Each case's trajectory is the same as run alone");
   cmd->callback([&action, o] { action = [o] { return runSweep(*o); }; });
 }
 

@@ -86,8 +86,9 @@ void updateOrientationAxes(ExecutionSpace const& space, BlockyArrays<MemorySpace
   Kokkos::parallel_for(
       "hikiln::dem::updateOrientationAxes", Kokkos::RangePolicy<ExecutionSpace>(space, 0, n),
       KOKKOS_LAMBDA(int i) {
-        axis(i, 0) = math::cos(theta(i));
-        axis(i, 1) = math::sin(theta(i));
+        const double angle = theta(i); // one value for both: a single sincos
+        axis(i, 0) = math::cos(angle);
+        axis(i, 1) = math::sin(angle);
       });
 }
 
@@ -108,10 +109,11 @@ void advanceOrientation(ExecutionSpace const& space, ParticleArrays<MemorySpace>
       "hikiln::dem::advanceOrientation", Kokkos::RangePolicy<ExecutionSpace>(space, 0, p.count()),
       KOKKOS_LAMBDA(int i) {
         if (isFree(kind(i))) {
-          theta(i) += dt * w(i);
+          const double angle = theta(i) + dt * w(i); // one value for both: a single sincos
+          theta(i) = angle;
           if (!isCircle(shape(i))) { // a circle's outline does not depend on its axis
-            axis(i, 0) = math::cos(theta(i));
-            axis(i, 1) = math::sin(theta(i));
+            axis(i, 0) = math::cos(angle);
+            axis(i, 1) = math::sin(angle);
           }
         }
       });

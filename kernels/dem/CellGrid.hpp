@@ -18,15 +18,17 @@ namespace hikiln::dem {
 /// \brief A uniform grid of nx * ny cells of size hx * hy starting at (xlo, ylo). Positions outside
 /// are clamped to the edge cells, which keeps neighbour search correct (clamping never separates
 /// two particles closer than a cell by more than one cell). With periodicX the x cells tile one
-/// period and wrap around.
+/// period and wrap around. `layers` copies of the grid stack the slices of a batch (DemBatch.hpp):
+/// particles of different layers share coordinates but never share a cell, so they never meet.
 struct CellGrid {
   double xlo = 0.0, ylo = 0.0;
   double hx = 1.0, hy = 1.0;
   int nx = 1, ny = 1;
+  int layers = 1;
   bool periodicX = false;
 
-  /// \brief Number of cells.
-  KOKKOS_INLINE_FUNCTION int numCells() const { return nx * ny; }
+  /// \brief Number of cells (all layers).
+  KOKKOS_INLINE_FUNCTION int numCells() const { return nx * ny * layers; }
   /// \brief Column of x, clamped to [0, nx).
   KOKKOS_INLINE_FUNCTION int cellX(double x) const {
     const double c = math::floor((x - xlo) / hx);
@@ -37,15 +39,18 @@ struct CellGrid {
     const double c = math::floor((y - ylo) / hy);
     return c < 0.0 ? 0 : (c >= ny ? ny - 1 : static_cast<int>(c));
   }
-  /// \brief Linear index of the cell holding (x, y).
-  KOKKOS_INLINE_FUNCTION int cellOf(double x, double y) const { return cellY(y) * nx + cellX(x); }
+  /// \brief Linear index of the cell holding (x, y) in layer `layer`.
+  KOKKOS_INLINE_FUNCTION int cellOf(double x, double y, int layer = 0) const {
+    return (layer * ny + cellY(y)) * nx + cellX(x);
+  }
 };
 
 /// \brief Builds a grid with cells no smaller than minCellSize covering [xmin, xmax] x [ymin, ymax]
-/// (x replaced by the period when periodic is enabled). maxCells bounds the cell count: beyond it
-/// the cells grow (still correct, only slower), which protects against a runaway particle.
+/// (x replaced by the period when periodic is enabled), `layers` deep. maxCells bounds the cell
+/// count: beyond it the cells grow (still correct, only slower), which protects against a runaway
+/// particle.
 inline CellGrid makeCellGrid(double xmin, double xmax, double ymin, double ymax, double minCellSize,
-                             const PeriodicX& periodic, std::size_t maxCells) {
+                             const PeriodicX& periodic, std::size_t maxCells, int layers = 1) {
   if (!(minCellSize > 0.0) || !std::isfinite(xmin) || !std::isfinite(xmax) ||
       !std::isfinite(ymin) || !std::isfinite(ymax)) {
     throw std::runtime_error("hikiln::dem::makeCellGrid: non-finite particle bounds or cell size "
@@ -64,7 +69,8 @@ inline CellGrid makeCellGrid(double xmin, double xmax, double ymin, double ymax,
       nx = countAlong(xmax - xmin, h);
     }
     ny = countAlong(ymax - ymin, h);
-    if (static_cast<double>(nx) * static_cast<double>(ny) <= static_cast<double>(maxCells)) {
+    if (static_cast<double>(nx) * static_cast<double>(ny) * layers <=
+        static_cast<double>(maxCells)) {
       break;
     }
     h *= 2.0;
@@ -86,6 +92,7 @@ inline CellGrid makeCellGrid(double xmin, double xmax, double ymin, double ymax,
   g.hy = h;
   g.nx = static_cast<int>(nx);
   g.ny = static_cast<int>(ny);
+  g.layers = layers;
   return g;
 }
 
@@ -160,6 +167,7 @@ Bounds particleBounds(ExecutionSpace const& space, PositionView const& position,
 /// indices of the particles in cell c in increasing order; cellOfParticle[i] is i's cell.
 template <class MemorySpace> struct CellBins {
   using memory_space = MemorySpace;
+  using layer_view = Kokkos::View<const int*, MemorySpace>; ///< each particle's layer
   CellGrid grid;
   Kokkos::View<int*, MemorySpace> cellOfParticle;
   Kokkos::View<int*, MemorySpace> cellCount;
@@ -186,9 +194,16 @@ template <class MemorySpace> struct CellBins {
 
 /// \brief Bins positions [0, n) into grid: counts (atomic), offsets (scan), fill (atomic) and a
 /// per-cell insertion sort that makes the order inside a cell independent of thread timing.
+/// `layer` gives each particle's layer (grid.layers > 1; empty: all in layer 0).
 template <class ExecutionSpace, class MemorySpace, class PositionView>
 void binParticles(ExecutionSpace const& space, CellGrid const& grid, PositionView const& position,
-                  std::size_t n, CellBins<MemorySpace>& bins) {
+                  std::size_t n, CellBins<MemorySpace>& bins,
+                  typename CellBins<MemorySpace>::layer_view const& layer = {}) {
+  if (grid.layers > 1 && layer.extent(0) < n) {
+    throw std::invalid_argument("hikiln::dem::binParticles: a layered grid needs every "
+                                "particle's layer");
+  }
+  const bool layered = grid.layers > 1;
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::dem::binParticles: bins not accessible");
   const int numCells = grid.numCells();
@@ -202,7 +217,7 @@ void binParticles(ExecutionSpace const& space, CellGrid const& grid, PositionVie
   Kokkos::parallel_for(
       "hikiln::dem::binCount", Kokkos::RangePolicy<ExecutionSpace>(space, 0, n),
       KOKKOS_LAMBDA(int i) {
-        const int c = grid.cellOf(position(i, 0), position(i, 1));
+        const int c = grid.cellOf(position(i, 0), position(i, 1), layered ? layer(i) : 0);
         cellOf(i) = c;
         Kokkos::atomic_fetch_add(&count(c), 1);
       });

@@ -41,6 +41,15 @@ struct ForceSettings {
   bool updateHistory = true; ///< false for the set-up evaluation (history not advanced)
 };
 
+/// \brief Per-slice settings of a batch of independent systems advanced together (DemBatch.hpp):
+/// particle i uses settings(slice(i)). Empty (the default): every particle uses the common
+/// settings.
+template <class MemorySpace> struct SliceTable {
+  Kokkos::View<const int*, MemorySpace> slice;
+  Kokkos::View<const ForceSettings*, MemorySpace> settings;
+  bool enabled() const { return slice.extent(0) > 0; }
+};
+
 namespace detail {
 
 /// \brief Particles per dynamically scheduled chunk of the force kernel (a few microseconds).
@@ -60,13 +69,15 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
   Kokkos::View<int**, MemorySpace> index;
   Kokkos::View<double**, MemorySpace> shear, slotFn, slotFt;
   Wall wallShear, wallFn, wallFt;
-  ForceSettings s;
+  ForceSettings common;           ///< settings of every particle, unless batched
+  SliceTable<MemorySpace> slices; ///< batches: per-slice settings
   int capacity;
 
   /// \brief Applies one wall contact (or clears its slot when not touching).
-  KOKKOS_INLINE_FUNCTION void wallContact(int i, int slot, bool touching, const ContactFrame& fr,
-                                          double mi, double ri, double relativeSpin, double& fx,
-                                          double& fy, double& t) const {
+  KOKKOS_INLINE_FUNCTION void wallContact(const ForceSettings& s, int i, int slot, bool touching,
+                                          const ContactFrame& fr, double mi, double ri,
+                                          double relativeSpin, double& fx, double& fy,
+                                          double& t) const {
     if (!touching) {
       if (Sample) {
         wallFn(i, slot) = 0.0;
@@ -90,6 +101,14 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
   }
 
   KOKKOS_INLINE_FUNCTION void operator()(int i) const {
+    if (slices.slice.extent(0) > 0) {
+      evaluate(i, slices.settings(slices.slice(i)));
+    } else {
+      evaluate(i, common);
+    }
+  }
+
+  KOKKOS_INLINE_FUNCTION void evaluate(int i, const ForceSettings& s) const {
     const double xi = x(i, 0), yi = x(i, 1);
     const double vxi = v(i, 0), vyi = v(i, 1);
     const double wi = w(i), ri = radius(i), mi = mass(i);
@@ -134,11 +153,11 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
     ContactFrame fr;
     if (s.walls.drum.enabled) {
       const bool touching = freeI && drumFrame(s.walls.drum, xi, yi, vxi, vyi, wi, ri, fr);
-      wallContact(i, 0, touching, fr, mi, ri, wi - s.walls.drum.angularVelocity, fx, fy, t);
+      wallContact(s, i, 0, touching, fr, mi, ri, wi - s.walls.drum.angularVelocity, fx, fy, t);
     }
     for (int k = 0; k < s.walls.numFlat; ++k) {
       const bool touching = freeI && flatFrame(s.walls.flat[k], xi, yi, vxi, vyi, wi, ri, fr);
-      wallContact(i, 1 + k, touching, fr, mi, ri, wi, fx, fy, t);
+      wallContact(s, i, 1 + k, touching, fr, mi, ri, wi, fx, fy, t);
     }
     if (Sample) {
       return;
@@ -162,7 +181,7 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
 template <bool Kick, bool Sample = false, class ExecutionSpace, class MemorySpace>
 void launchForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
                   NeighborList<MemorySpace> const& list, WallContactState<MemorySpace> const& walls,
-                  ForceSettings const& settings,
+                  ForceSettings const& settings, SliceTable<MemorySpace> const& slices,
                   Kokkos::View<double* [2], MemorySpace> const& velocityOut,
                   Kokkos::View<double*, MemorySpace> const& angularVelocityOut, const char* label) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
@@ -188,7 +207,8 @@ void launchForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const
   fun.wallShear = walls.shear;
   fun.wallFn = walls.normalForce;
   fun.wallFt = walls.tangentialForce;
-  fun.s = settings;
+  fun.common = settings;
+  fun.slices = slices;
   fun.capacity = list.capacity();
   // dynamic chunks: particles differ in contact count, and on a busy machine a thread that is
   // descheduled for a while leaves its remaining chunks to the others instead of stalling them
@@ -206,9 +226,10 @@ void launchForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const
 template <class ExecutionSpace, class MemorySpace>
 void computeForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
                    NeighborList<MemorySpace> const& list,
-                   WallContactState<MemorySpace> const& walls, ForceSettings const& settings) {
-  detail::launchForces<false>(space, p, list, walls, settings, p.velocity, p.angularVelocity,
-                              "hikiln::dem::computeForces");
+                   WallContactState<MemorySpace> const& walls, ForceSettings const& settings,
+                   SliceTable<MemorySpace> const& slices = {}) {
+  detail::launchForces<false>(space, p, list, walls, settings, slices, p.velocity,
+                              p.angularVelocity, "hikiln::dem::computeForces");
 }
 
 /// \brief The contact forces of the current state, for samplers (stress, wall shear): F_n and F_t
@@ -221,8 +242,8 @@ void computeForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> cons
 template <class ExecutionSpace, class MemorySpace>
 void computeContactForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
                           NeighborList<MemorySpace> const& list,
-                          WallContactState<MemorySpace> const& walls,
-                          ForceSettings const& settings) {
+                          WallContactState<MemorySpace> const& walls, ForceSettings const& settings,
+                          SliceTable<MemorySpace> const& slices = {}) {
   if (list.normalForce.extent(0) < p.count() || list.tangentialForce.extent(0) < p.count() ||
       list.normalForce.extent(1) != list.index.extent(1) ||
       list.tangentialForce.extent(1) != list.index.extent(1) ||
@@ -230,8 +251,8 @@ void computeContactForces(ExecutionSpace const& space, ParticleArrays<MemorySpac
     throw std::invalid_argument("hikiln::dem::computeContactForces: force views not allocated "
                                 "to the list's shape");
   }
-  detail::launchForces<false, true>(space, p, list, walls, settings, p.velocity, p.angularVelocity,
-                                    "hikiln::dem::computeContactForces");
+  detail::launchForces<false, true>(space, p, list, walls, settings, slices, p.velocity,
+                                    p.angularVelocity, "hikiln::dem::computeContactForces");
 }
 
 /// \brief Forces and torques as computeForces(), fused with the second half kick: velocityOut and
@@ -242,9 +263,10 @@ void computeForcesAndKick(ExecutionSpace const& space, ParticleArrays<MemorySpac
                           NeighborList<MemorySpace> const& list,
                           WallContactState<MemorySpace> const& walls, ForceSettings const& settings,
                           Kokkos::View<double* [2], MemorySpace> const& velocityOut,
-                          Kokkos::View<double*, MemorySpace> const& angularVelocityOut) {
-  detail::launchForces<true>(space, p, list, walls, settings, velocityOut, angularVelocityOut,
-                             "hikiln::dem::computeForcesAndKick");
+                          Kokkos::View<double*, MemorySpace> const& angularVelocityOut,
+                          SliceTable<MemorySpace> const& slices = {}) {
+  detail::launchForces<true>(space, p, list, walls, settings, slices, velocityOut,
+                             angularVelocityOut, "hikiln::dem::computeForcesAndKick");
 }
 
 } // namespace hikiln::dem

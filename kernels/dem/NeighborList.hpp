@@ -157,8 +157,10 @@ int rebuildNeighborList(ExecutionSpace const& space, CellBins<MemorySpace> const
         const double yi = position(i, 1);
         const double ri = radius(i);
         const int c = cellOf(i);
+        const int layerSize = grid.nx * grid.ny;
+        const int layerStart = c - c % layerSize; // neighbours only within i's layer
         const int cx = c % grid.nx;
-        const int cy = c / grid.nx;
+        const int cy = (c % layerSize) / grid.nx;
         int found = 0;
         for (int oy = -1; oy <= 1; ++oy) {
           const int y = cy + oy;
@@ -172,7 +174,7 @@ int rebuildNeighborList(ExecutionSpace const& space, CellBins<MemorySpace> const
             } else if (x < 0 || x >= grid.nx) {
               continue;
             }
-            const int cell = y * grid.nx + x;
+            const int cell = layerStart + y * grid.nx + x;
             for (int m = offset(cell); m < offset(cell + 1); ++m) {
               const int j = members(m);
               if (j == i) {

@@ -10,17 +10,18 @@
 /// shapes are centrally symmetric, so pen(n) - pen(-n) = -2 d . n and the minimum lies on the half
 /// circle around d/|d|: it is scanned at 15 angles 11.25 degrees apart, from d/|d| outwards (any
 /// sample with pen <= 0 is a separating axis: no contact, the usual early exit, mostly at the
-/// first sample), then the bracket around the best sample is refined by a root search on the
-/// exact derivative pen'(phi) = (s_A - s_B) . t (s the support points, t = perp(n)): Illinois
-/// (regula falsi) steps, with a bisection step whenever the bracket has not halved over two steps,
-/// until |pen'| is below 1e-12 of the shapes' size or the bracket below 1e-13 rad (at most
-/// contactRefineIterations steps; typically 10 for N = 2, 15 for N = 4, 25 for N = 8). At the
-/// root s_A - s_B is parallel to n, so the contact point, the midpoint of s_A and s_B, lies on the
-/// line of action through both support points: the torques are those of the potential
-/// k_n overlap^2 / 2 (energy consistent) and equal and opposite about it (angular momentum kept).
-/// Accuracy: the overlap to round-off, the normal to ~1e-13 rad. On near-flat faces (large N) the
-/// support point slides fast with the normal, ~|dphi|^(1/(N-1)), so the contact point of a
-/// face-to-face contact is known to ~1 % of the face width at N = 8 only. The scan can pick a
+/// first sample; a root-free upper bound of pen, supportValueBound(), is tried first and decides
+/// a clear gap without the exact value), then the bracket around the best sample is refined by a
+/// root search on the exact derivative pen'(phi) = (s_A - s_B) . t (s the support points, t =
+/// perp(n)): Illinois (regula falsi) steps, with a bisection step whenever the bracket has not
+/// halved over two steps, until |pen'| is below 1e-12 of the shapes' size or the bracket below
+/// 1e-13 rad (at most contactRefineIterations steps; typically 10 for N = 2, 15 for N = 4, 25 for
+/// N = 8). At the root s_A - s_B is parallel to n, so the contact point, the midpoint of s_A and
+/// s_B, lies on the line of action through both support points: the torques are those of the
+/// potential k_n overlap^2 / 2 (energy consistent) and equal and opposite about it (angular
+/// momentum kept). Accuracy: the overlap to round-off, the normal to ~1e-13 rad. On near-flat faces
+/// (large N) the support point slides fast with the normal, ~|dphi|^(1/(N-1)), so the contact point
+/// of a face-to-face contact is known to ~1 % of the face width at N = 8 only. The scan can pick a
 /// local minimum that is not the global one when two are within its resolution of each other:
 /// found in 0.2 % of 20000 random placements (N in [2, 8], aspect ratios in [1, 3], overlaps up
 /// to 70 % of the size), never in those of them with overlaps below 5 % of the size.
@@ -30,10 +31,11 @@
 /// Cheap paths in front of the scan (superquadricPair()): the oriented bounding rectangles apart
 /// (a superquadric with N >= 2 lies inside its a x b rectangle): no contact; a guess, the pair's
 /// last separating axis or last contact normal, which the force kernel keeps per neighbour slot:
-/// pen(guess) <= 0 is still a separating axis (no contact, one support evaluation per shape); a
-/// last normal with pen > 0 starts a local search (slope probed downhill, then the same root
-/// search), which falls back to the scan when no sign change lies within 0.5 rad. A warm-started
-/// search follows its basin of pen continuously; the cold scan takes the deepest sampled one.
+/// pen(guess) <= 0 is still a separating axis (no contact; the root-free bound first, then one
+/// support evaluation per shape); a last normal with pen > 0 starts a local search (slope probed
+/// downhill, then the same root search), which falls back to the scan when no sign change lies
+/// within 0.5 rad. A warm-started search follows its basin of pen continuously; the cold scan
+/// takes the deepest sampled one.
 ///
 /// Drum: overlap = max over the outline of |p| - R = max_n (x_c . n + h(n)) - R, found the same way
 /// around x_c/|x_c|; the contact point is the particle's deepest point. Flat wall: the support
@@ -101,6 +103,12 @@ KOKKOS_INLINE_FUNCTION double worldSupportValue(const SuperquadricShape& s, doub
   return supportValue(s, c * nx + sn * ny, -sn * nx + c * ny);
 }
 
+/// \brief supportValueBound() in the world direction (nx, ny).
+KOKKOS_INLINE_FUNCTION double worldSupportValueBound(const SuperquadricShape& s, double c,
+                                                     double sn, double nx, double ny) {
+  return supportValueBound(s, c * nx + sn * ny, -sn * nx + c * ny);
+}
+
 namespace detail {
 
 /// \brief pen(phi) of a pair and its derivative (see the file comment).
@@ -109,6 +117,12 @@ struct PairObjective {
   double ca, sa, cb, sb, dx, dy;
   KOKKOS_INLINE_FUNCTION double value(double nx, double ny) const {
     return worldSupportValue(A, ca, sa, nx, ny) + worldSupportValue(B, cb, sb, -nx, -ny) -
+           (dx * nx + dy * ny);
+  }
+  /// \brief An upper bound of value() without roots (supportValueBound()): <= 0 proves a
+  /// separating axis.
+  KOKKOS_INLINE_FUNCTION double valueBound(double nx, double ny) const {
+    return worldSupportValueBound(A, ca, sa, nx, ny) + worldSupportValueBound(B, cb, sb, -nx, -ny) -
            (dx * nx + dy * ny);
   }
   KOKKOS_INLINE_FUNCTION double slope(double nx, double ny) const {
@@ -132,6 +146,8 @@ struct DrumObjective {
   KOKKOS_INLINE_FUNCTION double value(double nx, double ny) const {
     return -(x * nx + y * ny + worldSupportValue(S, c, sn, nx, ny));
   }
+  /// \brief An upper bound of value(): the value itself (the drum's scan never stops early).
+  KOKKOS_INLINE_FUNCTION double valueBound(double nx, double ny) const { return value(nx, ny); }
   KOKKOS_INLINE_FUNCTION double slope(double nx, double ny) const {
     const Support s = worldSupport(S, c, sn, nx, ny);
     return -((x + s.x) * (-ny) + (y + s.y) * nx);
@@ -199,8 +215,12 @@ KOKKOS_INLINE_FUNCTION bool minimiseHalfCircle(const Objective& f, double phi0, 
   const double step = halfWidth / (M + 1);
   const double cs = math::cos(step), ss = math::sin(step);
   double upx = math::cos(phi0), upy = math::sin(phi0), dnx = upx, dny = upy;
+  // a sample whose bound (no roots) is <= 0 already proves a separating axis
+  const auto sample = [&](double nx, double ny) {
+    return stopAtNonPositive && !(f.valueBound(nx, ny) > 0.0) ? 0.0 : f.value(nx, ny);
+  };
   int best = 0;
-  double bestValue = f.value(upx, upy);
+  double bestValue = sample(upx, upy);
   if (stopAtNonPositive && !(bestValue > 0.0)) {
     phiOut = phi0;
     return false; // a separating axis
@@ -211,7 +231,7 @@ KOKKOS_INLINE_FUNCTION bool minimiseHalfCircle(const Objective& f, double phi0, 
     dny = -ss * dnx + cs * dny;
     upx = ux;
     dnx = dx;
-    const double vu = f.value(upx, upy), vd = f.value(dnx, dny);
+    const double vu = sample(upx, upy), vd = sample(dnx, dny);
     if (stopAtNonPositive && !(vu > 0.0 && vd > 0.0)) {
       phiOut = phi0 + (vu > 0.0 ? -j : j) * step;
       return false;
@@ -325,8 +345,11 @@ KOKKOS_INLINE_FUNCTION bool superquadricPair(const SuperquadricShape& A, BodyAxi
   detail::WarmStart start = detail::WarmStart::Failed;
   if (kind == PairGuess::Normal) {
     start = detail::minimiseFromGuess(f, guess, scale, phi);
-  } else if (kind == PairGuess::Axis && !(f.value(math::cos(guess), math::sin(guess)) > 0.0)) {
-    start = detail::WarmStart::Separated;
+  } else if (kind == PairGuess::Axis) { // the bound first: no roots for a clear gap
+    const double gx = math::cos(guess), gy = math::sin(guess);
+    if (!(f.valueBound(gx, gy) > 0.0) || !(f.value(gx, gy) > 0.0)) {
+      start = detail::WarmStart::Separated;
+    }
   }
   if (start == detail::WarmStart::Separated) {
     g.angle = guess; // still a separating axis

@@ -100,6 +100,7 @@ struct TwoPhaseStepReport {
   SolveStats viscous, pressure, energy;
   double heatBefore = 0.0;    ///< heat content before the step (energy on)
   double heatAfter = 0.0;     ///< ... after it
+  int heatSubsteps = 0;       ///< sub-steps of the heat advection (advectHeat())
   double maxDivergence = 0.0; ///< max |aperture-weighted div u| after the projection [1/s]
 };
 
@@ -231,7 +232,7 @@ public:
     transportVolumeFraction(_space, _cut, _u, settling().v, dt, rh.phiMax, _phi, _fct);
     report.solidsAfter = solidsContent(_space, _cut, _phi);
     if (_params.energy) {
-      report.energy = energyStep(dt, _T, _params.thermal);
+      report.energy = energyStep(dt, _T, _params.thermal, &report.heatSubsteps);
       report.heatAfter = heat();
     }
     for (TemperatureTracer const& tracer : _tracers) {
@@ -417,10 +418,14 @@ private:
 
   /// \brief Advects the temperature T with the fluxes of the volume-fraction step just taken
   /// (u^n) and diffuses it implicitly with the given thermal parameters.
-  SolveStats energyStep(double dt, field_type const& T, ThermalParameters const& thermal) {
+  SolveStats energyStep(double dt, field_type const& T, ThermalParameters const& thermal,
+                        int* substeps = nullptr) {
     const HeatCapacities heat = heatCapacities();
-    advectHeat(_space, _cut, _periodic, _u, _fct, dt, 0.5 * _params.rheology.phiMax, heat, _phiOld,
-               _phi, T, _Tstar);
+    const int m = advectHeat(_space, _cut, _periodic, _u, _fct, dt, 0.5 * _params.rheology.phiMax,
+                             heat, _phiOld, _phi, T, _Tstar);
+    if (substeps) {
+      *substeps = m;
+    }
     diffusionCoefficients(_space, _cut, _periodic, heat, thermal, _params.rheology.phiMax, dt, _phi,
                           _Tstar, _kappa, _tAlpha, _tBeta, _tRhs);
     MultigridOptions topt;

@@ -41,6 +41,8 @@ struct DemState {
   std::vector<double> shapeB;
   std::vector<double> shapeN;
   std::vector<double> contactAngle;
+  /// Batches only (DemBatch.hpp; empty otherwise): the slice of each particle.
+  std::vector<int> slice;
 
   /// \brief Number of particles.
   std::size_t size() const { return id.size(); }

@@ -44,6 +44,11 @@
 ///   (NeighborList::normalAngle) as the history, carried over rebuilds, reorders and checkpoints.
 ///   Shell-attached particles must be circles then. An all-circle blocky system follows the disc
 ///   system bitwise.
+/// - Batches (importSlices(), used by DemBatch.hpp): several independent systems ("slices", disc
+///   particles, no shell particles, no periodic boundary) in one set of arrays and one set of
+///   launches. Each particle carries its slice; the cell grid has one layer per slice, so
+///   particles of different slices never become neighbours, and the force kernel takes each
+///   particle's coefficients, walls and gravity from its slice's ForceSettings. dt is common.
 
 #include "kernels/common/Compat.hpp"
 #include "kernels/dem/BlockyArrays.hpp"
@@ -209,6 +214,7 @@ public:
 
   /// \brief Sets the drum's angular velocity (rad/s, counter-clockwise positive) from now on.
   void setDrumAngularVelocity(double omega) {
+    requireSingle("setDrumAngularVelocity");
     _config.walls.drum.angularVelocity = omega;
     _settings.walls.drum.angularVelocity = omega;
     updateShellMotion(); // shell particles take the new speed from the next step on
@@ -217,6 +223,7 @@ public:
 
   /// \brief Sets the gravity vector (m/s^2) from now on.
   void setGravity(double gx, double gy) {
+    requireSingle("setGravity");
     _config.gravityX = _settings.gravityX = gx;
     _config.gravityY = _settings.gravityY = gy;
     ++_version;
@@ -281,6 +288,10 @@ public:
         }
       }
     }
+    if (batched()) {
+      const auto slice = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, _slice);
+      s.slice.assign(slice.data(), slice.data() + n);
+    }
     if (_isBlocky) {
       const auto b = copyBlocky<Kokkos::HostSpace>(_blocky);
       for (std::size_t i = 0; i < n; ++i) {
@@ -296,7 +307,13 @@ public:
   /// \brief Replaces the whole state by an exported one (no force evaluation: the exported forces
   /// are used), then rebuilds the list with the imported history. Stepping on continues bitwise as
   /// the exporting system would have.
-  void importState(const DemState& s) {
+  void importState(const DemState& s) { importSlices(s, {}); }
+
+  /// \brief importState() for a batch: `s.slice` names each particle's slice in [0,
+  /// sliceSettings.size()), whose coefficients, walls and gravity it then feels (their dt is
+  /// replaced by this system's). Disc particles only, free or fixed, no periodic boundary; ids
+  /// unique over the batch. A state without slices imports as one system (sliceSettings empty).
+  void importSlices(const DemState& s, const std::vector<ForceSettings>& sliceSettings) {
     const std::size_t n = s.size();
     const auto bad = [](const char* what) {
       throw std::invalid_argument(std::string("hikiln::dem::DemState: ") + what);
@@ -318,6 +335,7 @@ public:
                    s.shapeN.size() != n || s.contactAngle.size() != s.contactId.size())) {
       bad("inconsistent blocky shape or contact direction sizes");
     }
+    checkSlices(s, sliceSettings.size());
     host_particles_type host(n, n);
     for (std::size_t i = 0; i < n; ++i) {
       host.id(i) = s.id[i];
@@ -399,6 +417,7 @@ public:
 
     _particles = copyParticles<memory_space>(host);
     updateInverseMassProperties(_space, _particles);
+    adoptSlices(s.slice, sliceSettings);
     allocateContactState(seed);
     Kokkos::View<double* [wallSlotCount], Kokkos::HostSpace> wallHost("hikiln::dem::wallShearHost",
                                                                       n);
@@ -411,6 +430,7 @@ public:
     _step = s.step;
     _time = s.time;
     configureFromParticles(host);
+    updateSliceTable();
     rebuild(sortDue());
     _space.fence();
   }
@@ -418,6 +438,7 @@ public:
   /// \brief Energies of the current state.
   EnergyReport energy() const {
     requireParticles();
+    requireSingle("energy"); // its potential and elastic parts need one set of coefficients
     synchronize();
     EnergyReport e = computeEnergy(_space, _particles, _list, _walls, _settings);
     if (_isBlocky) { // elastic parts from the blocky contact geometry
@@ -469,6 +490,10 @@ public:
   const NeighborList<memory_space>& neighborRows() const { return _list; }
   /// \brief True for a system of blocky particles (setParticles() with shapes).
   bool blocky() const { return _isBlocky; }
+  /// \brief True for a batch of slices (importSlices()).
+  bool batched() const { return _slice.extent(0) > 0; }
+  /// \brief Slices of a batch (1 otherwise).
+  int sliceCount() const { return _sliceCount; }
   /// \brief Host copy of the shapes and orientations, in hostParticles() order (capacity 0 for a
   /// disc system).
   host_blocky_type hostShapes() const {
@@ -499,7 +524,7 @@ public:
                         bytes(p.force) + bytes(p.torque) + bytes(p.radius) + bytes(p.mass) +
                         bytes(p.inertia) + bytes(p.inverseMass) + bytes(p.inverseInertia) +
                         bytes(p.id) + bytes(p.kind);
-    total += bytes(_shellHome);
+    total += bytes(_shellHome) + bytes(_slice) + bytes(_sliceSettings);
     total += bytes(_buildPosition) + _list.bytes() + bytes(_walls.shear);
     total += bytes(_bins.cellOfParticle) + bytes(_bins.cellCount) + bytes(_bins.cellOffset) +
              bytes(_bins.cellParticles);
@@ -538,6 +563,7 @@ private:
     host_particles_type host = copyParticles<Kokkos::HostSpace>(given); // placeNonFree edits it
     validateHost(host);
     adoptShapes(host, shapes);
+    adoptSlices({}, {});
     setShellHome(host, 0.0, {});
     placeNonFree(host);
     _particles = copyParticles<memory_space>(host);
@@ -588,6 +614,80 @@ private:
     Kokkos::deep_copy(_space, _area, area);
   }
 
+  // Checks a state's slice tags against a batch of `slices` slices (0: not a batch).
+  void checkSlices(const DemState& s, std::size_t slices) const {
+    const auto bad = [](const std::string& what) {
+      throw std::invalid_argument("hikiln::dem::DemSystem::importSlices: " + what);
+    };
+    if (s.slice.empty() != (slices == 0)) {
+      bad("a batch needs both the particles' slices and the slices' settings");
+    }
+    if (slices == 0) {
+      return;
+    }
+    if (s.slice.size() != s.size()) {
+      bad("inconsistent array sizes (slice)");
+    }
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      if (s.slice[i] < 0 || static_cast<std::size_t>(s.slice[i]) >= slices) {
+        bad("particle " + std::to_string(s.id[i]) + " names slice " + std::to_string(s.slice[i]) +
+            " of " + std::to_string(slices));
+      }
+      if (!s.kind.empty() && s.kind[i] == static_cast<std::uint8_t>(ParticleKind::Shell)) {
+        bad("shell-attached particles cannot be batched (each slice's shell turns on its own)");
+      }
+    }
+    if (!s.orientation.empty()) {
+      bad("blocky particles cannot be batched");
+    }
+    if (_config.periodic.enabled) {
+      bad("periodic systems cannot be batched");
+    }
+  }
+
+  // Device copies of the particles' slices and the slices' settings (empty: a single system).
+  void adoptSlices(const std::vector<int>& slice, const std::vector<ForceSettings>& settings) {
+    _sliceCount = settings.empty() ? 1 : static_cast<int>(settings.size());
+    _sliceTableHost = settings;
+    if (slice.empty()) {
+      _slice = Kokkos::View<int*, memory_space>();
+      _sliceSettings = Kokkos::View<ForceSettings*, memory_space>();
+      return;
+    }
+    _slice = Kokkos::View<int*, memory_space>(
+        Kokkos::view_alloc(_space, std::string("hikiln::dem::slice")), _particles.capacity());
+    Kokkos::View<const int*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged> given(slice.data(),
+                                                                               slice.size());
+    Kokkos::deep_copy(_space, Kokkos::subview(_slice, std::make_pair(std::size_t(0), slice.size())),
+                      given);
+    _sliceSettings = Kokkos::View<ForceSettings*, memory_space>(
+        Kokkos::view_alloc(_space, std::string("hikiln::dem::sliceSettings")), settings.size());
+  }
+
+  // The slices' settings on the device, with this system's time step.
+  void updateSliceTable() {
+    if (!batched()) {
+      return;
+    }
+    auto host = Kokkos::create_mirror_view(_sliceSettings);
+    for (std::size_t k = 0; k < _sliceTableHost.size(); ++k) {
+      host(k) = _sliceTableHost[k];
+      host(k).dt = _settings.dt;
+      host(k).updateHistory = true;
+    }
+    Kokkos::deep_copy(_space, _sliceSettings, host);
+    _space.fence();
+  }
+
+  SliceTable<memory_space> sliceTable() const { return {_slice, _sliceSettings}; }
+
+  void requireSingle(const char* what) const {
+    if (batched()) {
+      throw std::logic_error(std::string("hikiln::dem::DemSystem::") + what +
+                             ": not available for a batch of slices (export the slices)");
+    }
+  }
+
   // An empty list of `rows` rows `width` wide (with the pair directions for blocky systems).
   NeighborList<memory_space> leanList(std::size_t rows, int width) const {
     auto list = NeighborList<memory_space>::lean(rows, width, _space);
@@ -602,7 +702,7 @@ private:
     if (_isBlocky) {
       computeBlockyForces(_space, _particles, _blocky, _list, _walls, settings);
     } else {
-      computeForces(_space, _particles, _list, _walls, settings);
+      computeForces(_space, _particles, _list, _walls, settings, sliceTable());
     }
   }
 
@@ -776,7 +876,8 @@ private:
       computeBlockyContactForces(_space, _particles, _blocky, _published, _publishedWalls,
                                  _settings, _publishedVirial);
     } else {
-      computeContactForces(_space, _particles, _published, _publishedWalls, _settings);
+      computeContactForces(_space, _particles, _published, _publishedWalls, _settings,
+                           sliceTable());
     }
     _publishedVersion = _version;
   }
@@ -809,9 +910,9 @@ private:
   void rebuild(bool sort) {
     const std::size_t n = _particles.count();
     const Bounds b = particleBounds(_space, _particles.position, n);
-    const CellGrid grid =
-        makeCellGrid(b.xmin, b.xmax, b.ymin, b.ymax, _cellSize, _settings.periodic, 4 * n + 4096);
-    binParticles(_space, grid, _particles.position, n, _bins);
+    const CellGrid grid = makeCellGrid(b.xmin, b.xmax, b.ymin, b.ymax, _cellSize,
+                                       _settings.periodic, 4 * n + 4096, _sliceCount);
+    binParticles(_space, grid, _particles.position, n, _bins, _slice);
     ++_version;
     if (sort) {
       // one field at a time; the rows follow with their indices remapped
@@ -822,11 +923,14 @@ private:
         permuteView(_space, _bins.cellParticles, n, _blocky.axis);
         permuteView(_space, _bins.cellParticles, n, _area);
       }
+      if (batched()) {
+        permuteView(_space, _bins.cellParticles, n, _slice);
+      }
       auto list = leanList(_list.rows(), _list.capacity());
       auto walls = leanWallState(_walls.shear.extent(0));
       permuteContactRows(_space, _bins.cellParticles, n, _list, list, _walls, walls);
       adoptContactState(list, walls);
-      binParticles(_space, grid, _particles.position, n, _bins);
+      binParticles(_space, grid, _particles.position, n, _bins, _slice);
       ++_sortCount;
     }
     for (;;) { // rows that did not fit are left as they were: widen and repeat
@@ -865,6 +969,10 @@ private:
   BlockyArrays<memory_space> _blocky;        // blocky systems: shapes and orientations
   Kokkos::View<double*, memory_space> _area; // blocky systems: true particle areas
   bool _isBlocky = false;
+  Kokkos::View<int*, memory_space> _slice;                   // batches: each particle's slice
+  Kokkos::View<ForceSettings*, memory_space> _sliceSettings; // batches: per-slice settings
+  std::vector<ForceSettings> _sliceTableHost;
+  int _sliceCount = 1;
   mutable Kokkos::View<double* [4], memory_space> _publishedVirial; // see contactVirial()
   // what neighborList()/wallContacts() hand out: the live rows plus the optional views
   mutable NeighborList<memory_space> _published;

@@ -14,20 +14,14 @@ common=(--set time.spin_up=0.1 --set time.settle=0.5 --set output.checkpoint_int
 "$hikiln" -q --threads 1 dem "$case" -o "$work/one" --set time.duration=0.4 "${common[@]}"
 diff "$work/full/timeseries.csv" "$work/split/timeseries.csv"
 diff "$work/full/timeseries.csv" "$work/one/timeseries.csv"
-/usr/bin/python3 - "$work" <<'PY'
-import sys, h5py, numpy as np
+/usr/bin/python3 - "$work" "$(dirname "$0")" <<'PY'
+import sys, numpy as np
 work = sys.argv[1]
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+sys.path.insert(0, sys.argv[2])
+from checkpoint_state import particle_state
 def state(run):
-    f = h5py.File(f"{work}/{run}/checkpoint.h5", "r")
-    order = np.argsort(f["integers/id"][()])
-    out = {}
-    for k in ["position", "velocity", "angular_velocity", "force", "torque", "wall_shear"]:
-        x = f["reals/" + k][()]
-        out[k] = x.reshape(len(order), -1)[order]
-    for k in ["slip_sum", "angle_sum", "slip_n"]:
-        out[k] = f["scalars/" + k][()]
-    out["step"] = f.attrs["step"]
-    return out
+    return particle_state(f"{work}/{run}/checkpoint.h5")
 full = state("full")
 for other in ["split", "one"]:
     s = state(other)

@@ -51,6 +51,16 @@ inline void expectBitwiseEqual(const std::map<std::int64_t, Kinematics>& a,
   }
 }
 
+/// Tangential history of an exported state by (particle id, neighbour id).
+using History = std::map<std::pair<std::int64_t, std::int64_t>, double>;
+inline History history(const DemState& s) {
+  History h;
+  for (std::size_t c = 0; c < s.contactId.size(); ++c) {
+    h[{s.contactId[c], s.contactNeighborId[c]}] = s.contactShear[c];
+  }
+  return h;
+}
+
 /// Host container for n particles with ids 100 + 7 i (not equal to the indices).
 inline ParticleArrays<Kokkos::HostSpace> hostParticles(std::size_t n) {
   ParticleArrays<Kokkos::HostSpace> h(n, n);

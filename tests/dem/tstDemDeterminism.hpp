@@ -13,6 +13,8 @@
 namespace {
 
 using namespace hikiln::dem;
+using test::history;
+using test::History;
 using space = TEST_EXECSPACE;
 // on a device the compiler may contract a*b+c into FMA: compare with the host to round-off only
 constexpr bool bitwiseVsHost =
@@ -49,15 +51,6 @@ const DemState& settledBed() {
     return sys.exportState();
   }();
   return state;
-}
-
-using History = std::map<std::pair<std::int64_t, std::int64_t>, double>;
-History history(const DemState& s) {
-  History h;
-  for (std::size_t c = 0; c < s.contactId.size(); ++c) {
-    h[{s.contactId[c], s.contactNeighborId[c]}] = s.contactShear[c];
-  }
-  return h;
 }
 
 // slots (with both sides counted) that touch, and among them those slipping at mu F_n

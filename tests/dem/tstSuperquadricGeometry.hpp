@@ -150,6 +150,30 @@ TEST(TEST_CATEGORY, superquadric_corner_to_face) {
   }
 }
 
+TEST(TEST_CATEGORY, superquadric_support_bound) {
+  // the root-free bound of the support value (separating-axis tests): never below it, exact in
+  // the directions of the face centres and of the corners (a |u| = b |v|), close in between
+  std::mt19937_64 gen(23);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (const double n : {2.0, 2.5, 3.0, 4.0, 5.5, 6.0, 8.0}) {
+    for (const double aspect : {1.0, 2.5}) {
+      const SuperquadricShape s{0.7, 0.7 / aspect, n};
+      double worst = 0.0;
+      for (int k = 0; k < 2000; ++k) {
+        const double psi = pi * u(gen), du = std::cos(psi), dv = std::sin(psi);
+        const double h = supportValue(s, du, dv), bound = supportValueBound(s, du, dv);
+        EXPECT_GE(bound, h) << "N " << n << " psi " << psi;
+        worst = std::max(worst, bound / h - 1.0);
+      }
+      EXPECT_LT(worst, 0.085) << "N " << n; // 0.082 for circles, less for blockier shapes
+      EXPECT_NEAR(supportValueBound(s, 1.0, 0.0), s.a, 1e-14);
+      EXPECT_NEAR(supportValueBound(s, 0.0, -1.0), s.b, 1e-14);
+      const double cu = s.b / std::hypot(s.a, s.b), cv = s.a / std::hypot(s.a, s.b); // a u = b v
+      EXPECT_NEAR(supportValueBound(s, cu, cv) / supportValue(s, cu, cv), 1.0, 1e-14) << "N " << n;
+    }
+  }
+}
+
 // Brute-force minimum of pen over `count` directions on the full circle.
 double bruteOverlap(const SuperquadricShape& A, double ta, const SuperquadricShape& B, double tb,
                     double dx, double dy, int count) {
