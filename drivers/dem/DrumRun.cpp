@@ -197,16 +197,7 @@ public:
   void advanceAlone(std::int64_t n) { _heat.advance(_system, n); }
   /// \brief Why this slice cannot join a batch (empty: it can).
   std::string whyNotBatchable() const {
-    if (_heat.enabled())
-      return "heat transfer is on";
-    if (_system.blocky())
-      return "blocky particles";
-    if (_system.config().periodic.enabled)
-      return "periodic boundary";
-    const auto counts = particleKindCounts(_system.hostParticles());
-    if (counts["shell"].get<std::int64_t>() > 0)
-      return "a rough drum (shell-attached particles)";
-    return "";
+    return _heat.enabled() ? "heat transfer is on" : DemBatch<Space>::refusal(_system);
   }
 
   /// \brief Sampling, snapshots, averages and checkpoints due after n steps were taken.

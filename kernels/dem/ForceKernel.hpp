@@ -47,7 +47,7 @@ struct ForceSettings {
 template <class MemorySpace> struct SliceTable {
   Kokkos::View<const int*, MemorySpace> slice;
   Kokkos::View<const ForceSettings*, MemorySpace> settings;
-  bool enabled() const { return slice.extent(0) > 0; }
+  KOKKOS_INLINE_FUNCTION bool enabled() const { return slice.extent(0) > 0; }
 };
 
 namespace detail {
@@ -101,7 +101,7 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
   }
 
   KOKKOS_INLINE_FUNCTION void operator()(int i) const {
-    if (slices.slice.extent(0) > 0) {
+    if (slices.enabled()) {
       evaluate(i, slices.settings(slices.slice(i)));
     } else {
       evaluate(i, common);

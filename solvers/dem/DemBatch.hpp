@@ -46,11 +46,8 @@ public:
     }
     const int k = static_cast<int>(_slices.size());
     const std::string who = "hikiln::dem::DemBatch: slice " + std::to_string(k);
-    if (system.blocky()) {
-      throw std::invalid_argument(who + ": blocky particles cannot be batched");
-    }
-    if (system.config().periodic.enabled) {
-      throw std::invalid_argument(who + ": periodic systems cannot be batched");
+    if (const std::string why = refusal(system); !why.empty()) {
+      throw std::invalid_argument(who + " cannot be batched: " + why);
     }
     if (!_slices.empty() && system.timeStep() != _slices.front().settings.dt) {
       throw std::invalid_argument(who + " has the time step " + std::to_string(system.timeStep()) +
@@ -58,17 +55,29 @@ public:
                                   " s: the slices of a batch need the same time step");
     }
     Slice s{system.exportState(), system.forceSettings(), system.config(), system.skin(), 0};
-    if (s.state.size() == 0) {
-      throw std::invalid_argument(who + " has no particles");
-    }
-    for (std::uint8_t kind : s.state.kind) {
-      if (kind == static_cast<std::uint8_t>(ParticleKind::Shell)) {
-        throw std::invalid_argument(who + ": shell-attached particles cannot be batched (each "
-                                          "slice's shell turns on its own)");
-      }
-    }
     _slices.push_back(std::move(s));
     return k;
+  }
+
+  /// \brief Why a system cannot join a batch (empty: it can).
+  static std::string refusal(const system_type& system) {
+    if (system.size() == 0) {
+      return "no particles";
+    }
+    if (system.blocky()) {
+      return "blocky particles";
+    }
+    if (system.config().periodic.enabled) {
+      return "a periodic boundary";
+    }
+    const auto kind =
+        Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, system.particles().kind);
+    for (std::size_t i = 0; i < system.size(); ++i) {
+      if (kind(i) == static_cast<std::uint8_t>(ParticleKind::Shell)) {
+        return "shell-attached particles (each slice's shell turns on its own)";
+      }
+    }
+    return "";
   }
 
   /// \brief Builds the combined system from the slices added (their states as they were then).

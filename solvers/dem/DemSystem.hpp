@@ -236,6 +236,7 @@ public:
     }
     synchronize(); // the pending half kick belongs to the old step size
     _config.timeStep = _settings.dt = dt;
+    updateSliceTable(); // a batch's slices step with it
   }
 
   /// \brief Copies the state needed to continue the run bitwise identically to the host.
