@@ -10,11 +10,17 @@
 /// particles are the disc engine's (ContactLaw.hpp). Torques use the lever from the centre to the
 /// contact point, r x F.
 ///
-/// Pair symmetry: a pair of non-circles is always evaluated with the lower id as the first body
-/// (the same operations on the same values from both rows), so both rows get bitwise the same
-/// frame, force and history, and the forces are exactly opposite. A pair of circles takes the disc
-/// engine's pairFrame() from the row owner's side and the torque r F_t, so an all-circle system
-/// reproduces DemSystem bitwise.
+/// Pair symmetry: a pair of non-circles is always evaluated with the lower id as the first body,
+/// so both rows get bitwise the same frame, force and history, and the forces are exactly
+/// opposite. A pair of circles takes the disc engine's pairFrame() from the row owner's side and
+/// the torque r F_t, so an all-circle system reproduces DemSystem bitwise.
+///
+/// Each pair of non-circles is evaluated once per step (the narrow phase is the cost): a first
+/// pass (BlockyPairFunctor) evaluates it in the lower id's row and keeps both sides' force and
+/// torque in that slot (BlockyPairOutcomes); the second pass (BlockyForceFunctor) sums each row in
+/// neighbour order, reading the partner slot of the lower id's row where the row owner has the
+/// higher id and copying its history. The sums are those of evaluating the pair from both rows,
+/// bitwise.
 
 #include "kernels/common/Compat.hpp"
 #include "kernels/dem/BlockyArrays.hpp"
@@ -73,6 +79,22 @@ template <class MemorySpace> struct BlockyContacts {
   /// \brief Body axis of particle i.
   KOKKOS_INLINE_FUNCTION BodyAxis axisOf(int i) const { return BodyAxis{axis(i, 0), axis(i, 1)}; }
 
+  /// \brief What a slot holds before the narrow phase: bounding circles apart or both particles
+  /// fixed (Apart, no contact), two circles (the disc engine's formula) or a pair for the
+  /// superquadric narrow phase.
+  enum class PairKind : int { Apart, Circles, Shapes };
+
+  /// \brief The PairKind of particles i and j (no velocity loads).
+  KOKKOS_INLINE_FUNCTION PairKind screen(int i, int j) const {
+    const double dx = s.periodic.minimumImage(x(j, 0) - x(i, 0));
+    const double dy = x(j, 1) - x(i, 1);
+    const double radsum = radius(i) + radius(j);
+    if (!(dx * dx + dy * dy < radsum * radsum) || !(isFree(kind(i)) || isFree(kind(j)))) {
+      return PairKind::Apart;
+    }
+    return isCircle(shape(i)) && isCircle(shape(j)) ? PairKind::Circles : PairKind::Shapes;
+  }
+
   /// \brief Contact of row owner i with neighbour j. On contact: the frame as seen by the first
   /// body (i for circles, else the lower id; iFirst says which), the contact force and i's
   /// force and torque from it. Returns false (nothing else set) when not touching. angle: the
@@ -83,22 +105,26 @@ template <class MemorySpace> struct BlockyContacts {
   KOKKOS_INLINE_FUNCTION bool pair(int i, int j, double shearOld, bool updateHistory,
                                    ContactFrame& frame, ContactForce& c, double& fx, double& fy,
                                    double& t, double& angle, double& lx, double& ly) const {
-    const double stored = angle;
-    angle = 0.0;
-    const double xi = x(i, 0), yi = x(i, 1);
-    const double ri = radius(i), rj = radius(j);
-    const double dx = s.periodic.minimumImage(x(j, 0) - xi);
-    const double dy = x(j, 1) - yi;
-    const double radsum = ri + rj;
-    if (!(dx * dx + dy * dy < radsum * radsum)) { // bounding circles apart: no velocity loads
+    return pairOfKind(screen(i, j), i, j, shearOld, updateHistory, frame, c, fx, fy, t, angle, lx,
+                      ly);
+  }
+
+  /// \brief pair() with the pair's screen() result.
+  KOKKOS_INLINE_FUNCTION bool pairOfKind(PairKind pairKind, int i, int j, double shearOld,
+                                         bool updateHistory, ContactFrame& frame, ContactForce& c,
+                                         double& fx, double& fy, double& t, double& angle,
+                                         double& lx, double& ly) const {
+    if (pairKind != PairKind::Shapes) { // apart pairs and circles keep no direction
+      angle = 0.0;
+    }
+    if (pairKind == PairKind::Apart) {
       return false;
     }
-    const bool freeI = isFree(kind(i)), freeJ = isFree(kind(j));
-    if (!(freeI || freeJ)) {
-      return false;
-    }
-    const SuperquadricShape si = shape(i), sj = shape(j);
-    if (isCircle(si) && isCircle(sj)) { // the disc engine, from i's side
+    if (pairKind == PairKind::Circles) { // the disc engine, from i's side
+      const double ri = radius(i), rj = radius(j);
+      const double dx = s.periodic.minimumImage(x(j, 0) - x(i, 0));
+      const double dy = x(j, 1) - x(i, 1);
+      const bool freeI = isFree(kind(i)), freeJ = isFree(kind(j));
       const double wi = w(i), wj = w(j);
       if (!pairFrame(dx, dy, v(j, 0) - v(i, 0), v(j, 1) - v(i, 1), ri, rj, wi, wj, frame)) {
         return false;
@@ -114,10 +140,23 @@ template <class MemorySpace> struct BlockyContacts {
       return true;
     }
     const bool iFirst = id(i) < id(j);
-    const int a = iFirst ? i : j, b = iFirst ? j : i;
+    PairContact pc;
+    if (!orderedPair(iFirst ? i : j, iFirst ? j : i, shearOld, updateHistory, pc, c, angle)) {
+      return false;
+    }
+    frame = pc.frame;
+    side(pc, c, iFirst, fx, fy, t, lx, ly);
+    return true;
+  }
+
+  /// \brief A pair of non-circles with a the lower id (the first body) whose bounding circles
+  /// overlap and of which one is free: pc (frame seen by a, levers) and c on contact. angle: the
+  /// slot's stored direction in, this evaluation's out (as pair()).
+  KOKKOS_INLINE_FUNCTION bool orderedPair(int a, int b, double shearOld, bool updateHistory,
+                                          PairContact& pc, ContactForce& c, double& angle) const {
+    const double stored = angle;
     const double abx = s.periodic.minimumImage(x(b, 0) - x(a, 0));
     const double aby = x(b, 1) - x(a, 1);
-    PairContact pc;
     const PairGuess guessKind =
         stored > 0.0 ? PairGuess::Normal : (stored < 0.0 ? PairGuess::Axis : PairGuess::None);
     const bool touching =
@@ -127,18 +166,35 @@ template <class MemorySpace> struct BlockyContacts {
     if (!touching) {
       return false;
     }
-    frame = pc.frame;
     const double rr = s.particle.rolling ? rollingRadius(radius(a), radius(b)) : 0.0;
-    c = evaluateContact(s.particle, frame,
+    c = evaluateContact(s.particle, pc.frame,
                         pairEffectiveMass(mass(a), isFree(kind(a)), mass(b), isFree(kind(b))), rr,
                         w(a) - w(b), shearOld, s.dt, updateHistory);
-    const double sign = iFirst ? 1.0 : -1.0; // force on the second body is opposite
-    fx = sign * (-c.normal * frame.nx + c.tangential * (-frame.ny));
-    fy = sign * (-c.normal * frame.ny + c.tangential * frame.nx);
-    lx = iFirst ? pc.rAx : pc.rBx;
-    ly = iFirst ? pc.rAy : pc.rBy;
-    t = lx * fy - ly * fx + sign * c.rollingTorque;
     return true;
+  }
+
+  /// \brief Force, torque and lever of the first body (first) or of the second from an
+  /// orderedPair() contact; the second body's force is the exact opposite.
+  KOKKOS_INLINE_FUNCTION static void side(const PairContact& pc, const ContactForce& c, bool first,
+                                          double& fx, double& fy, double& t, double& lx,
+                                          double& ly) {
+    const double sign = first ? 1.0 : -1.0;
+    fx = sign * (-c.normal * pc.frame.nx + c.tangential * (-pc.frame.ny));
+    fy = sign * (-c.normal * pc.frame.ny + c.tangential * pc.frame.nx);
+    lx = first ? pc.rAx : pc.rBx;
+    ly = first ? pc.rAy : pc.rBy;
+    t = lx * fy - ly * fx + sign * c.rollingTorque;
+  }
+
+  /// \brief The slot of i in row j (-1 when j's row lacks it: a truncated row).
+  KOKKOS_INLINE_FUNCTION int partnerSlot(int j, int i) const {
+    const int n = count(j) < capacity ? count(j) : capacity;
+    for (int m = 0; m < n; ++m) {
+      if (index(j, m) == i) {
+        return m;
+      }
+    }
+    return -1;
   }
 
   /// \brief Contact of particle i with wall slot `slot` (0 drum, 1 + k flat wall k); as pair().
@@ -173,23 +229,93 @@ template <class MemorySpace> struct BlockyContacts {
   }
 };
 
-/// \brief Per-particle force evaluation (see the file comment).
+/// \brief A slot's pair of non-circles as the first pass left it for the row owner: its force
+/// and torque from the pair, and whether it was evaluated (cleared by the second pass).
+struct PairOutcome {
+  double fx = 0.0, fy = 0.0, torque = 0.0;
+  int state = 0; ///< 0: not evaluated, 1: evaluated, apart, 2: evaluated, touching
+};
+
+/// \brief First pass: each pair of non-circles (PairKind::Shapes) evaluated once, in the row of
+/// its lower id with that slot's history; the outcome and the updated history go to the slots of
+/// the pair in both rows (each slot has one writer: the pair's lower id).
+template <class MemorySpace> struct BlockyPairFunctor {
+  BlockyContacts<MemorySpace> b;
+  Kokkos::View<PairOutcome**, MemorySpace> outcome;
+  using PairKind = typename BlockyContacts<MemorySpace>::PairKind;
+
+  KOKKOS_INLINE_FUNCTION void operator()(int i) const {
+    const int n = b.count(i) < b.capacity ? b.count(i) : b.capacity;
+    const bool warm = b.normalAngle.extent(0) > 0;
+    const bool circle = isCircle(b.shape(i));
+    for (int k = 0; k < n; ++k) {
+      const int j = b.index(i, k);
+      if (!(b.id(i) < b.id(j)) || (circle && isCircle(b.shape(j))) ||
+          b.screen(i, j) != PairKind::Shapes) {
+        continue; // the partner's row evaluates it, or the second pass does (see there)
+      }
+      const int m = b.partnerSlot(j, i);
+      if (m < 0) {
+        continue; // j's row lacks i (not in a full list): each row evaluates it in the second pass
+      }
+      PairOutcome first, second;
+      first.state = second.state = 1;
+      double angle = warm ? b.normalAngle(i, k) : 0.0;
+      PairContact pc;
+      ContactForce c;
+      const bool touching = b.orderedPair(i, j, b.shear(i, k), b.s.updateHistory, pc, c, angle);
+      if (touching) {
+        double lx, ly;
+        b.side(pc, c, true, first.fx, first.fy, first.torque, lx, ly);
+        b.side(pc, c, false, second.fx, second.fy, second.torque, lx, ly);
+        first.state = second.state = 2;
+      }
+      outcome(i, k) = first;
+      outcome(j, m) = second;
+      if (warm) {
+        b.normalAngle(i, k) = angle;
+        b.normalAngle(j, m) = angle;
+      }
+      const double shear = touching ? c.shear : 0.0; // history ends with the contact
+      b.shear(i, k) = shear;
+      b.shear(j, m) = shear;
+    }
+  }
+};
+
+/// \brief Second pass: each particle's force and torque summed over its row in neighbour order
+/// (pairs of non-circles from the first pass; circles, and pairs apart, evaluated here as
+/// pair() does), walls and gravity.
 template <class MemorySpace> struct BlockyForceFunctor {
   BlockyContacts<MemorySpace> b;
+  Kokkos::View<PairOutcome**, MemorySpace> outcome;
   Kokkos::View<double* [2], MemorySpace> f;
   Kokkos::View<double*, MemorySpace> tq;
+  using PairKind = typename BlockyContacts<MemorySpace>::PairKind;
 
   KOKKOS_INLINE_FUNCTION void operator()(int i) const {
     double fx = 0.0, fy = 0.0, t = 0.0;
     const int n = b.count(i) < b.capacity ? b.count(i) : b.capacity;
     const bool warm = b.normalAngle.extent(0) > 0;
     for (int k = 0; k < n; ++k) { // ascending neighbour id: a fixed summation order
-      ContactFrame frame;
+      const int j = b.index(i, k);
+      const PairKind pairKind = b.screen(i, j);
+      if (pairKind == PairKind::Shapes && outcome(i, k).state != 0) {
+        const PairOutcome o = outcome(i, k);
+        outcome(i, k).state = 0;
+        if (o.state == 2) {
+          fx += o.fx;
+          fy += o.fy;
+          t += o.torque;
+        }
+        continue;
+      }
+      ContactFrame frame; // circles, pairs apart, or a slot the partner's row lacks
       ContactForce c;
       double px = 0.0, py = 0.0, pt = 0.0, lx = 0.0, ly = 0.0;
       double angle = warm ? b.normalAngle(i, k) : 0.0;
-      const bool touching = b.pair(i, b.index(i, k), b.shear(i, k), b.s.updateHistory, frame, c, px,
-                                   py, pt, angle, lx, ly);
+      const bool touching = b.pairOfKind(pairKind, i, j, b.shear(i, k), b.s.updateHistory, frame, c,
+                                         px, py, pt, angle, lx, ly);
       if (warm && angle != b.normalAngle(i, k)) { // circle rows stay 0: no stores
         b.normalAngle(i, k) = angle;
       }
@@ -336,22 +462,36 @@ blockyContacts(ParticleArrays<MemorySpace> const& p, BlockyArrays<MemorySpace> c
 
 } // namespace detail
 
-/// \brief Forces and torques of blocky particles [0, n) into p.force / p.torque.
+/// \brief Per-slot scratch of the first force pass (see the file comment); computeBlockyForces()
+/// sizes it to the neighbour list.
+template <class MemorySpace>
+using BlockyPairOutcomes = Kokkos::View<detail::PairOutcome**, MemorySpace>;
+
+/// \brief Forces and torques of blocky particles [0, n) into p.force / p.torque; `outcomes` is
+/// reallocated when it does not match the list's shape.
 template <class ExecutionSpace, class MemorySpace>
 void computeBlockyForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
                          BlockyArrays<MemorySpace> const& blocky,
                          NeighborList<MemorySpace> const& list,
-                         WallContactState<MemorySpace> const& walls,
-                         ForceSettings const& settings) {
+                         WallContactState<MemorySpace> const& walls, ForceSettings const& settings,
+                         BlockyPairOutcomes<MemorySpace>& outcomes) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::dem::computeBlockyForces: particle memory not accessible");
-  detail::BlockyForceFunctor<MemorySpace> fun{
-      detail::blockyContacts(p, blocky, list, walls, settings), p.force, p.torque};
-  Kokkos::parallel_for(
-      "hikiln::dem::computeBlockyForces",
+  if (outcomes.extent(0) != list.rows() ||
+      outcomes.extent(1) != static_cast<std::size_t>(list.capacity())) {
+    outcomes = BlockyPairOutcomes<MemorySpace>(
+        Kokkos::view_alloc(space, std::string("hikiln::dem::pairOutcomes")), // zero: not evaluated
+        list.rows(), list.capacity());
+  }
+  const auto contacts = detail::blockyContacts(p, blocky, list, walls, settings);
+  const auto policy =
       Kokkos::RangePolicy<ExecutionSpace, Kokkos::Schedule<Kokkos::Dynamic>>(space, 0, p.count())
-          .set_chunk_size(detail::forceChunk),
-      fun);
+          .set_chunk_size(detail::forceChunk);
+  Kokkos::parallel_for("hikiln::dem::blockyPairs", policy,
+                       detail::BlockyPairFunctor<MemorySpace>{contacts, outcomes});
+  Kokkos::parallel_for(
+      "hikiln::dem::computeBlockyForces", policy,
+      detail::BlockyForceFunctor<MemorySpace>{contacts, outcomes, p.force, p.torque});
 }
 
 /// \brief The contact forces of the current state for samplers, as computeContactForces() for

@@ -533,7 +533,7 @@ public:
              bytes(_published.tangentialForce) + bytes(_publishedWalls.normalForce) +
              bytes(_publishedWalls.tangentialForce);
     total += bytes(_blocky.orientation) + bytes(_blocky.shape) + bytes(_blocky.axis) +
-             bytes(_area) + bytes(_publishedVirial);
+             bytes(_area) + bytes(_publishedVirial) + bytes(_pairOutcomes);
     return total;
   }
   /// \brief Coefficients, walls, gravity and dt as the kernels see them.
@@ -701,7 +701,7 @@ private:
   // Contact, wall and gravity forces of the current state into the particle arrays.
   void evaluateForces(const ForceSettings& settings) {
     if (_isBlocky) {
-      computeBlockyForces(_space, _particles, _blocky, _list, _walls, settings);
+      computeBlockyForces(_space, _particles, _blocky, _list, _walls, settings, _pairOutcomes);
     } else {
       computeForces(_space, _particles, _list, _walls, settings, sliceTable());
     }
@@ -967,8 +967,9 @@ private:
   NeighborList<memory_space> _list;
   WallContactState<memory_space> _walls;
   CellBins<memory_space> _bins;
-  BlockyArrays<memory_space> _blocky;        // blocky systems: shapes and orientations
-  Kokkos::View<double*, memory_space> _area; // blocky systems: true particle areas
+  BlockyArrays<memory_space> _blocky;             // blocky systems: shapes and orientations
+  Kokkos::View<double*, memory_space> _area;      // blocky systems: true particle areas
+  BlockyPairOutcomes<memory_space> _pairOutcomes; // blocky systems: force pass scratch
   bool _isBlocky = false;
   Kokkos::View<int*, memory_space> _slice;                   // batches: each particle's slice
   Kokkos::View<ForceSettings*, memory_space> _sliceSettings; // batches: per-slice settings

@@ -33,6 +33,26 @@ inline BlockyArrays<Kokkos::HostSpace> blockify(const ParticleArrays<Kokkos::Hos
   return b;
 }
 
+/// A rotating drum (radius 0.12 m, 3 rad/s) with a frictional bed: rolling resistance on, soft
+/// springs for quick settling.
+inline DemConfig blockyDrumConfig() {
+  DemConfig cfg;
+  cfg.walls.drum.enabled = true;
+  cfg.walls.drum.radius = 0.12;
+  cfg.walls.drum.angularVelocity = 3.0;
+  cfg.particleContact.normalStiffness = 2.0e3;
+  cfg.particleContact.tangentialStiffness = 1.0e3;
+  cfg.wallContact = cfg.particleContact;
+  cfg.particleContact.rolling = RollingModel::ConstantTorque;
+  cfg.particleContact.rollingFriction = 0.05;
+  return cfg;
+}
+
+/// n discs of radius 5 mm (+-10 %) packed from the bottom of blockyDrumConfig()'s drum.
+inline ParticleArrays<Kokkos::HostSpace> blockyDrumBed(std::size_t n, unsigned seed) {
+  return drumParticles(n, 0.12, 0.005, 0.1, 0.05, seed, 1.05, true);
+}
+
 /// Orientation of every particle keyed by id.
 template <class System> std::map<std::int64_t, double> orientationById(const System& sys) {
   const auto h = sys.hostParticles();

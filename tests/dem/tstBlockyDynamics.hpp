@@ -22,30 +22,12 @@ using space = TEST_EXECSPACE;
 constexpr bool bitwiseVsHost =
     Kokkos::SpaceAccessibility<Kokkos::HostSpace, space::memory_space>::accessible;
 
-// A rotating drum with a frictional bed (rolling resistance on, soft springs: quick settling).
-DemConfig drumConfig() {
-  DemConfig cfg;
-  cfg.walls.drum.enabled = true;
-  cfg.walls.drum.radius = 0.12;
-  cfg.walls.drum.angularVelocity = 3.0;
-  cfg.particleContact.normalStiffness = 2.0e3;
-  cfg.particleContact.tangentialStiffness = 1.0e3;
-  cfg.wallContact = cfg.particleContact;
-  cfg.particleContact.rolling = RollingModel::ConstantTorque;
-  cfg.particleContact.rollingFriction = 0.05;
-  return cfg;
-}
-
-ParticleArrays<Kokkos::HostSpace> drumBed(std::size_t n, unsigned seed) {
-  return test::drumParticles(n, 0.12, 0.005, 0.1, 0.05, seed, 1.05, true);
-}
-
 TEST(TEST_CATEGORY, blocky_circles_reproduce_disc_engine) {
-  auto h = drumBed(150, 3);
+  auto h = test::blockyDrumBed(150, 3);
   const auto shapes = test::blockify(h, 2.0, 1.0, 0); // circles: radius, mass, inertia as discs
-  DemSystem<space> disc(drumConfig());
+  DemSystem<space> disc(test::blockyDrumConfig());
   disc.setParticles(h);
-  DemSystem<space> blocky(drumConfig());
+  DemSystem<space> blocky(test::blockyDrumConfig());
   blocky.setParticles(h, shapes);
   ASSERT_EQ(disc.timeStep(), blocky.timeStep());
   for (int block = 0; block < 4; ++block) {
@@ -133,10 +115,10 @@ TEST(TEST_CATEGORY, blocky_momentum_conserved_isolated_cluster) {
 }
 
 TEST(TEST_CATEGORY, blocky_thread_count_independent) {
-  auto h = drumBed(150, 7);
+  auto h = test::blockyDrumBed(150, 7);
   const auto shapes = test::blockify(h, 4.0, 1.5, 8);
-  DemSystem<space> sys(drumConfig());
-  DemSystem<Kokkos::Serial> reference(drumConfig());
+  DemSystem<space> sys(test::blockyDrumConfig());
+  DemSystem<Kokkos::Serial> reference(test::blockyDrumConfig());
   sys.setParticles(h, shapes);
   reference.setParticles(h, shapes);
   sys.advance(1500);
@@ -161,9 +143,9 @@ TEST(TEST_CATEGORY, blocky_thread_count_independent) {
 // exportState()/importState() of a blocky bed (reordered by cell along the way) continue bitwise:
 // positions, velocities, orientations and the pair directions kept as history.
 TEST(TEST_CATEGORY, blocky_restart_continues_bitwise) {
-  auto h = drumBed(150, 11);
+  auto h = test::blockyDrumBed(150, 11);
   const auto shapes = test::blockify(h, 6.0, 1.3, 12);
-  DemConfig cfg = drumConfig();
+  DemConfig cfg = test::blockyDrumConfig();
   cfg.sortEveryRebuilds = 2;
   DemSystem<space> original(cfg);
   original.setParticles(h, shapes);
