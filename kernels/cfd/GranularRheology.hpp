@@ -157,4 +157,20 @@ void mixtureViscosity(ExecutionSpace const& space, Grid const& grid,
       });
 }
 
+/// \brief mu += clamp(phi / phiMax, 0, 1) eta per cell: a Newtonian bed of viscosity eta (a
+/// verification option of the two-phase solver).
+template <class ExecutionSpace, class MemorySpace>
+void addConstantBedViscosity(ExecutionSpace const& space, Grid const& grid,
+                             Field<MemorySpace> const& phi, double phiMax, double eta,
+                             Field<MemorySpace> const& mu) {
+  const int g = grid.ghost, gz = grid.ghostZ();
+  Kokkos::parallel_for(
+      "hikiln::cfd::constantBedViscosity",
+      gridPolicy(space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+      KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        const double s = math::fmin(math::fmax(phi(i + g, j + g, k + gz) / phiMax, 0.0), 1.0);
+        mu(i + g, j + g, k + gz) += s * eta;
+      });
+}
+
 } // namespace hikiln::cfd

@@ -460,19 +460,8 @@ private:
     }
     mixtureViscosity(_space, _grid, rheology, _phi, _pBed, _gammaDot, _cut.wallLayer, _mu);
     if (_params.constantBedViscosity > 0.0) {
-      const Grid grid = _grid;
-      const int g = grid.ghost, gz = grid.ghostZ();
-      const double eta = _params.constantBedViscosity;
-      const double phiMax = rheology.phiMax;
-      const auto phi = _phi;
-      const auto mu = _mu;
-      Kokkos::parallel_for(
-          "hikiln::cfd::constantBedViscosity",
-          gridPolicy(_space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
-          KOKKOS_LAMBDA(const int i, const int j, const int k) {
-            const double s = math::fmin(math::fmax(phi(i + g, j + g, k + gz) / phiMax, 0.0), 1.0);
-            mu(i + g, j + g, k + gz) += s * eta;
-          });
+      addConstantBedViscosity(_space, _grid, _phi, rheology.phiMax, _params.constantBedViscosity,
+                              _mu);
     }
   }
 

@@ -592,6 +592,7 @@ private:
       return;
     }
     const std::size_t n = h.count();
+    _circlesOnly = true;
     if (shapes->capacity() < n) {
       throw std::invalid_argument("hikiln::dem::DemSystem: fewer shapes than particles");
     }
@@ -607,6 +608,7 @@ private:
       b.shape(i) = s;
       b.orientation(i) = shapes->orientation(i);
       area(i) = superquadricArea(s);
+      _circlesOnly = _circlesOnly && isCircle(s);
     }
     _blocky = copyBlocky<memory_space>(b);
     updateOrientationAxes(_space, _blocky, n);
@@ -701,7 +703,8 @@ private:
   // Contact, wall and gravity forces of the current state into the particle arrays.
   void evaluateForces(const ForceSettings& settings) {
     if (_isBlocky) {
-      computeBlockyForces(_space, _particles, _blocky, _list, _walls, settings, _pairOutcomes);
+      computeBlockyForces(_space, _particles, _blocky, _list, _walls, settings, _pairOutcomes,
+                          _circlesOnly);
     } else {
       computeForces(_space, _particles, _list, _walls, settings, sliceTable());
     }
@@ -970,6 +973,7 @@ private:
   BlockyArrays<memory_space> _blocky;             // blocky systems: shapes and orientations
   Kokkos::View<double*, memory_space> _area;      // blocky systems: true particle areas
   BlockyPairOutcomes<memory_space> _pairOutcomes; // blocky systems: force pass scratch
+  bool _circlesOnly = false; // blocky systems: every shape a circle (no pair pass needed)
   bool _isBlocky = false;
   Kokkos::View<int*, memory_space> _slice;                   // batches: each particle's slice
   Kokkos::View<ForceSettings*, memory_space> _sliceSettings; // batches: per-slice settings
