@@ -2,7 +2,7 @@
 /// \file BlockyForceKernel.hpp
 /// \brief Contact, wall and gravity forces of blocky (superquadric) particles from their full
 /// neighbour rows, as ForceKernel.hpp does for discs: each particle sums its own force and torque
-/// in neighbour-id order and writes only its own entries (no atomics, thread-count independent).
+/// in neighbour-id order (no atomics, thread-count independent).
 ///
 /// Broad phase: the neighbour list on bounding circles (ParticleArrays::radius = bounding radius);
 /// a slot is tested with the bounding circles before the narrow phase (SuperquadricContact.hpp).
@@ -16,11 +16,11 @@
 /// the torque r F_t, so an all-circle system reproduces DemSystem bitwise.
 ///
 /// Each pair of non-circles is evaluated once per step (the narrow phase is the cost): a first
-/// pass (BlockyPairFunctor) evaluates it in the lower id's row and keeps both sides' force and
-/// torque in that slot (BlockyPairOutcomes); the second pass (BlockyForceFunctor) sums each row in
-/// neighbour order, reading the partner slot of the lower id's row where the row owner has the
-/// higher id and copying its history. The sums are those of evaluating the pair from both rows,
-/// bitwise.
+/// pass (BlockyPairFunctor) evaluates it in the lower id's row and writes each side's force and
+/// torque and the updated history into the pair's slot in both rows (BlockyPairOutcomes; each
+/// slot has that one writer); the second pass (BlockyForceFunctor) sums each row in neighbour
+/// order from its own slots. The sums are bitwise those of every row evaluating its pairs with
+/// BlockyContacts::pair() (tstBlockyForcePasses.hpp).
 
 #include "kernels/common/Compat.hpp"
 #include "kernels/dem/BlockyArrays.hpp"
