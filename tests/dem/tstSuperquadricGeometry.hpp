@@ -447,7 +447,8 @@ Kokkos::View<double* [4], Kokkos::HostSpace> pairsOnBackend(const std::vector<Ra
     hostIn(k) = pairs[k];
   }
   auto in = Kokkos::create_mirror_view_and_copy(typename Space::memory_space{}, hostIn);
-  Kokkos::View<double* [4], typename Space::memory_space> out("out", n);
+  // LayoutRight: the host copy returned below keeps it (a CUDA view would default to LayoutLeft)
+  Kokkos::View<double* [4], Kokkos::LayoutRight, typename Space::memory_space> out("out", n);
   Kokkos::parallel_for(
       "pairs", Kokkos::RangePolicy<Space>(0, n), KOKKOS_LAMBDA(int k) {
         const RandomPair p = in(k);
