@@ -81,7 +81,11 @@ struct GranularRheology {
 
 /// \brief gamma_dot = sqrt(2 D':D') per cell from MAC velocities whose ghosts are filled: normal
 /// rates from the two faces of the cell, shear rates as the mean of the four cell edges around
-/// it along each pair of axes (2D: D' = D - tr(D) I / 2, 3D: - tr(D) I / 3).
+/// it along each pair of axes. D' = D - tr(D) I / 3 is the deviator of the 3D tensor in 2D as
+/// well (a 2D grid is a plane-strain slice, D_zz = 0), so a 2D drum and a 3D drum periodic along
+/// its axis get the same gamma_dot even in the cut cells at the shell, whose discrete D keeps a
+/// trace (their forced faces are not divergence-free). Where tr(D) = 0 it is the DEM's 2D
+/// invariant sqrt((D_xx - D_yy)^2 + 4 D_xy^2).
 template <class ExecutionSpace, class MemorySpace>
 void strainRateInvariant(ExecutionSpace const& space, Grid const& grid,
                          VelocityFields<MemorySpace> const& u, Field<MemorySpace> const& out) {
@@ -126,14 +130,11 @@ void strainRateInvariant(ExecutionSpace const& space, Grid const& grid,
             d[a][b] = d[b][a] = 0.125 * sum;
           }
         }
-        double trace = 0.0;
-        for (int a = 0; a < dims; ++a) {
-          trace += d[a][a];
-        }
+        const double trace = d[0][0] + d[1][1] + d[2][2];
         double dd = 0.0;
-        for (int a = 0; a < dims; ++a) {
-          for (int b = 0; b < dims; ++b) {
-            const double dev = d[a][b] - (a == b ? trace / dims : 0.0);
+        for (int a = 0; a < 3; ++a) {
+          for (int b = 0; b < 3; ++b) {
+            const double dev = d[a][b] - (a == b ? trace / 3.0 : 0.0);
             dd += dev * dev;
           }
         }

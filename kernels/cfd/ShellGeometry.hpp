@@ -21,8 +21,9 @@
 ///   everywhere, so the forcing outside the shell is consistent. On the cut faces beside the bed
 ///   the drag is capped by Coulomb friction, mu_wall sigma_n per unit wall area
 ///   (ProjectionKernels.hpp, WallFriction), which lets the bed slip.
-/// Fractions are measured by sampling (samples^d points per cell, samples^(d-1) per face): exact
-/// for any shape that offers `inside`, which keeps geometry composable (the 3D kiln adds end
+/// Fractions are measured by sampling (samples^d points per cell, samples^(d-1) per face, a face
+/// point open when the shape holds it a hair, 1e-9 cells, before and after the face): exact for
+/// any shape that offers `inside`, which keeps geometry composable (the 3D kiln adds end
 /// faces, inlet/outlet patches and a dam ring as further shapes; see ShapeIntersection).
 
 #include "kernels/cfd/Grid.hpp"
@@ -137,6 +138,7 @@ buildCutCells(ExecutionSpace const& space, Grid const& grid, Shape const& shape,
     const auto cx = cc.centroid[axis][0], cy = cc.centroid[axis][1], cz = cc.centroid[axis][2];
     const bool periodic = options.periodic[axis];
     const int n = grid.cells(axis);
+    const double sideOffset = 1e-9 * grid.spacing(axis);
     const int hi[3] = {grid.nx + (axis == 0), grid.ny + (axis == 1), grid.nz + (axis == 2)};
     Kokkos::parallel_for(
         "hikiln::cfd::cutCellApertures", gridPolicy(space, {0, 0, 0}, hi),
@@ -165,7 +167,13 @@ buildCutCells(ExecutionSpace const& space, Grid const& grid, Shape const& shape,
                       ((a + 0.5) / SF - 0.5) * grid.spacing(t1);
               p[t2] = grid.coordinate(Staggering::Cell, t2, t2 == 1 ? j : k) +
                       (dims == 3 ? ((b + 0.5) / SF - 0.5) * grid.spacing(t2) : 0.0);
-              if (shape.inside(p[0], p[1], p[2])) {
+              // open when inside just before and just after the face: a face lying on a
+              // shape's own face (the dam ring's) is open only where both sides are fluid
+              double before[3] = {p[0], p[1], p[2]}, after[3] = {p[0], p[1], p[2]};
+              before[axis] -= sideOffset;
+              after[axis] += sideOffset;
+              if (shape.inside(before[0], before[1], before[2]) &&
+                  shape.inside(after[0], after[1], after[2])) {
                 ++count;
                 for (int d = 0; d < 3; ++d) {
                   sum[d] += p[d];

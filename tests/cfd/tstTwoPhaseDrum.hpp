@@ -8,6 +8,7 @@
 //   hydrostatic granular pressure, whether the pressure starts hydrostatic or at 0 (gravity and
 //   the pressure gradient meet on the same faces: the balance is exact to the solver tolerance).
 #include "CfdTestUtils.hpp"
+#include "TwoPhaseTestUtils.hpp"
 #include "solvers/cfd/TwoPhaseSolver.hpp"
 
 #include <gtest/gtest.h>
@@ -22,18 +23,6 @@ using space = TEST_EXECSPACE;
 using solver_type = TwoPhaseSolver<space>;
 
 constexpr double diameter = 1.0;
-
-TwoPhaseParameters drumParameters() {
-  TwoPhaseParameters p;
-  p.solidDensity = 2500.0;
-  p.rheology.phiMax = 0.6;
-  p.rheology.m0 = 0.5;
-  p.rheology.m1 = 0.02;
-  p.rheology.muWall = 0.35;
-  p.rheology.viscosityMax = 1e5;
-  p.dtMax = 0.02;
-  return p;
-}
 
 DrumShell drum(double rpm) {
   DrumShell s;
@@ -74,7 +63,7 @@ void velocityError(solver_type const& solver, double& error, double& speed,
 
 TEST(TEST_CATEGORY, two_phase_drum_conserves_solids) {
   const Grid g = drumGrid(32, diameter);
-  solver_type solver(space{}, g, drum(6.0), drumParameters());
+  solver_type solver(space{}, g, drum(6.0), test::drumParameters());
   solver.setFlatBed(-0.1); // about 37 % of the drum area
   const double initial = solver.solids();
   double worst = 0.0, lo = 0.0, hi = 0.0, minPhi = 1.0, maxPhi = 0.0, divergence = 0.0;
@@ -106,7 +95,7 @@ TEST(TEST_CATEGORY, two_phase_drum_conserves_solids) {
 
 TEST(TEST_CATEGORY, two_phase_full_drum_rotates_rigidly) {
   const Grid g = drumGrid(32, diameter);
-  TwoPhaseParameters p = drumParameters();
+  TwoPhaseParameters p = test::drumParameters();
   p.constantBedViscosity = 1e4;
   p.dtMax = 0.01;
   solver_type solver(space{}, g, drum(3.0), p);
@@ -126,7 +115,7 @@ TEST(TEST_CATEGORY, two_phase_full_drum_rotates_rigidly) {
 
 double slipAfter(double muWall, int steps) {
   const Grid g = drumGrid(32, diameter);
-  TwoPhaseParameters p = drumParameters();
+  TwoPhaseParameters p = test::drumParameters();
   p.rheology.muWall = muWall;
   solver_type solver(space{}, g, drum(6.0), p);
   solver.setFlatBed(-0.1);
@@ -150,7 +139,7 @@ TEST(TEST_CATEGORY, two_phase_wall_friction_controls_slip) {
 // p_bed = phiMax (rhoS - rhoG) g (level - y) in the bed; spurious velocities after `steps`.
 void stillBed(bool hydrostaticStart, double& spurious, double& pressureError) {
   const Grid g = drumGrid(32, diameter);
-  TwoPhaseParameters p = drumParameters();
+  TwoPhaseParameters p = test::drumParameters();
   solver_type solver(space{}, g, drum(0.0), p);
   const double level = -0.1 + 0.3 * g.hy;
   solver.setFlatBed(level);
