@@ -23,8 +23,8 @@
 ///   (ProjectionKernels.hpp, WallFriction), which lets the bed slip.
 /// Fractions are measured by sampling (samples^d points per cell, samples^(d-1) per face, a face
 /// point open when the shape holds it a hair, 1e-9 cells, before and after the face): exact for
-/// any shape that offers `inside`, which keeps geometry composable (the 3D kiln adds end
-/// faces, inlet/outlet patches and a dam ring as further shapes; see ShapeIntersection).
+/// any shape that offers `inside`, which keeps geometry composable (the 3D kiln's end faces and
+/// dam ring: KilnShell in KilnGeometry.hpp; shapes combine with ShapeIntersection).
 
 #include "kernels/cfd/Grid.hpp"
 
