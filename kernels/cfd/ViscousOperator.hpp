@@ -13,6 +13,13 @@
 /// normal component is given on the boundary faces (stored in the field's boundary nodes; 0 on
 /// coarse levels). Kernels: apply, residual, red-black Gauss-Seidel per component, edge
 /// viscosities.
+///
+/// Closed faces (optional `open`, the cut-cell face apertures): a stress whose strain reads a
+/// closed face (aperture 0, held at the wall velocity by the caller's penalty) is left out: the
+/// normal stress of a cell along axis a when one of its two a-faces is closed, the shear stress
+/// on an edge when one of its four faces is closed (edgeViscosities). The wall's pull on the
+/// fluid is then only what the caller's wall law puts on the cut faces (a Coulomb cap). Whole
+/// stress terms are dropped, so the operator stays a sum of squares (symmetric, semi-definite).
 
 #include "kernels/cfd/AxisClosure.hpp"
 #include "kernels/cfd/BoxSplit.hpp"
@@ -46,14 +53,17 @@ template <class MemorySpace> struct ViscousOperator {
   using memory_space = MemorySpace;
   Grid grid;
   AxisClosure axis[3][3];
-  Field<MemorySpace> alpha[3];  ///< per component on its faces; empty: alpha = 0
-  Field<MemorySpace> mu;        ///< cell-centred viscosity
-  Field<MemorySpace> muEdge[3]; ///< edge viscosities (edgeSlot)
+  Field<MemorySpace> alpha[3];      ///< per component on its faces; empty: alpha = 0
+  Field<MemorySpace> mu;            ///< cell-centred viscosity
+  Field<MemorySpace> muEdge[3];     ///< edge viscosities (edgeSlot)
+  VelocityFields<MemorySpace> open; ///< face apertures (see the file comment); empty: all open
 
   /// \brief Number of velocity components (2 or 3).
   KOKKOS_INLINE_FUNCTION int numComponents() const { return grid.is3D() ? 3 : 2; }
   /// \brief True when the operator has an alpha term.
   KOKKOS_INLINE_FUNCTION bool hasAlpha() const { return alpha[0].extent(0) > 0; }
+  /// \brief True when stresses that read closed faces are left out.
+  KOKKOS_INLINE_FUNCTION bool masksClosedFaces() const { return open.comp[0].extent(0) > 0; }
 };
 
 /// \brief Splits (A u)_C at unknown (i, j, k) of component C (Dims axes) into diag * u_c(i, j, k) -
@@ -108,11 +118,21 @@ KOKKOS_INLINE_FUNCTION void viscousStencil(ViscousOperator<MemorySpace> const& o
       const double dnLow = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
       rest += (cu * (upHigh - upLow) - cd * (dnHigh - dnLow)) * scale.invMixed[a][c];
     }
+    const Neighbour up = upOf<Interior>(ax, idx[a], affine);
+    const Neighbour dn = downOf<Interior>(ax, idx[a], affine);
+    if (a == c && op.masksClosedFaces()) {
+      // the normal strain of the cell above (below) reads this face and the one above (below)
+      const auto& open = op.open.comp[c];
+      int q[3] = {i + off[0], j + off[1], k + off[2]};
+      const bool here = open(q[0], q[1], q[2]) > 0.0;
+      q[a] = up.index + off[a];
+      cu = here && open(q[0], q[1], q[2]) > 0.0 ? cu : 0.0;
+      q[a] = dn.index + off[a];
+      cd = here && open(q[0], q[1], q[2]) > 0.0 ? cd : 0.0;
+    }
     const double inv2 = scale.inv2[a];
     cu *= inv2;
     cd *= inv2;
-    const Neighbour up = upOf<Interior>(ax, idx[a], affine);
-    const Neighbour dn = downOf<Interior>(ax, idx[a], affine);
     diag += cu * up.diag + cd * dn.diag;
     int q[3] = {i, j, k};
     q[a] = up.index;
@@ -244,16 +264,19 @@ void smoothViscousColour(ExecutionSpace const& space, ViscousOperator<MemorySpac
 
 /// \brief Edge viscosities from cell viscosities: the mean of the four cells around each edge
 /// (cells beyond a non-periodic boundary mirror the inside ones; periodic axes wrap). Every edge,
-/// boundary edges included, is written.
+/// boundary edges included, is written. With `open` (face apertures), an edge whose shear strain
+/// reads a closed face gets 0 (see the file comment).
 template <class ExecutionSpace, class MemorySpace>
 void edgeViscosities(ExecutionSpace const& space, Grid const& grid, bool const (&periodic)[3],
-                     Field<MemorySpace> const& mu, Field<MemorySpace> const (&muEdge)[3]) {
+                     Field<MemorySpace> const& mu, Field<MemorySpace> const (&muEdge)[3],
+                     VelocityFields<MemorySpace> const& open = VelocityFields<MemorySpace>()) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::edgeViscosities: fields not accessible");
   const int off[3] = {grid.ghost, grid.ghost, grid.ghostZ()};
   const int n[3] = {grid.nx, grid.ny, grid.nz};
   const bool per[3] = {periodic[0], periodic[1], periodic[2]};
   const int numSlots = grid.is3D() ? 3 : 1;
+  const bool masked = open.comp[0].extent(0) > 0;
   for (int slot = 0; slot < numSlots; ++slot) {
     const int a = slot == 2 ? 1 : 0;
     const int b = slot == 0 ? 1 : 2;
@@ -273,6 +296,22 @@ void edgeViscosities(ExecutionSpace const& space, Grid const& grid, bool const (
             return cell;
           };
           int idx[3] = {i, j, k};
+          if (masked) {
+            // the shear strain du_a/dx_b + du_b/dx_a: u_a at node idx[a] in the cells beside
+            // the edge along b, and u_b the other way round
+            for (int side = 0; side < 2; ++side) {
+              int fa[3] = {i, j, k}, fb[3] = {i, j, k};
+              fa[a] = per[a] && idx[a] == n[a] ? 0 : idx[a];
+              fa[b] = cellIndex(b, idx[b], side);
+              fb[b] = per[b] && idx[b] == n[b] ? 0 : idx[b];
+              fb[a] = cellIndex(a, idx[a], side);
+              if (open.comp[a](fa[0] + off[0], fa[1] + off[1], fa[2] + off[2]) <= 0.0 ||
+                  open.comp[b](fb[0] + off[0], fb[1] + off[1], fb[2] + off[2]) <= 0.0) {
+                out(i + off[0], j + off[1], k + off[2]) = 0.0;
+                return;
+              }
+            }
+          }
           double sum = 0.0;
           for (int sa = 0; sa < 2; ++sa) {
             for (int sb = 0; sb < 2; ++sb) {

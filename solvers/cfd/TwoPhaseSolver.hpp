@@ -14,7 +14,9 @@
 /// 4. Momentum predictor, viscous terms implicit (ViscousMultigrid, PCG):
 ///    rho (u* - u^n) / dt = -rho (u^n . grad) u^n + div(mu (grad u* + grad u*^T))
 ///    + Brinkman forcing to the shell velocity on faces that are not fully open.
-///    Bed viscosities of 1e3-1e5 Pa s therefore do not limit dt.
+///    Bed viscosities of 1e3-1e5 Pa s therefore do not limit dt. With the Coulomb wall, the
+///    viscous stresses that read a closed face are left out (ViscousOperator.hpp): the shell
+///    pulls on the bed only through the capped forcing on the cut faces, mu_wall sigma_n.
 /// 5. Projection (CellMultigrid, PCG) for the full pressure with gravity
 ///    (non-incremental, balanced force): u** = u* + dt g, div(a / rho grad p) = div(a u**) / dt
 ///    with a the face apertures, u^{n+1} = u** - dt / rho grad p on open faces. Gravity and the
@@ -255,7 +257,14 @@ public:
     MultigridOptions vopt;
     vopt.tolerance = _params.viscousTolerance;
     vopt.maxIterations = _params.maxIterations;
-    ViscousMultigrid<ExecutionSpace> viscous(_space, _grid, _velocityBc, _alpha, _mu, vopt);
+    velocity_type openFaces; // empty: the viscous stencil keeps its couplings to closed faces
+    if (friction.enabled) {
+      for (int c = 0; c < dims(); ++c) {
+        openFaces.comp[c] = _cut.aperture[c];
+      }
+    }
+    ViscousMultigrid<ExecutionSpace> viscous(_space, _grid, _velocityBc, _alpha, _mu, vopt,
+                                             openFaces);
     report.viscous = viscous.solvePcg(_uStar, _rhs);
     if (!report.viscous.converged) {
       throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: momentum solve did not converge (" +
@@ -304,9 +313,11 @@ public:
   double solids() { return solidsContent(_space, _cut, _phi); }
   /// \brief Wall slip as the DEM stage defines it (physics.md 2): 1 - (tangential bed speed at
   /// the wall / shell speed), over the wall-layer cells holding bed (phi >= phiMax / 2), each at
-  /// its centre (velocity = mean of its faces) against omega r there, weighted by capacity x
-  /// phi. NaN when the shell does not turn or no bed touches it. Needs a DrumShell-like shape
-  /// (cx, cy, omega).
+  /// its centre against omega r there, weighted by capacity x phi. A cell's velocity component
+  /// is the aperture-weighted mean of its two faces: a closed face is held at the shell
+  /// velocity and is not bed, so it does not count (a cell with no open face along an axis is
+  /// skipped). NaN when the shell does not turn or no bed touches it. Needs a DrumShell-like
+  /// shape (cx, cy, omega).
   double wallSlip() {
     if (_shape.omega == 0.0) {
       return std::nan("");
@@ -317,6 +328,7 @@ public:
     const auto wall = _cut.wallLayer;
     const auto phi = _phi;
     const auto u = _u.comp[0], v = _u.comp[1];
+    const auto au = _cut.aperture[0], av = _cut.aperture[1];
     const double half = 0.5 * _params.rheology.phiMax;
     const double cx = _shape.cx, cy = _shape.cy, omega = _shape.omega;
     double sum = 0.0, weight = 0.0;
@@ -327,11 +339,16 @@ public:
           if (wall(I, J, K) <= 0.0 || phi(I, J, K) < half) {
             return;
           }
+          const double openU = au(I, J, K) + au(I + 1, J, K);
+          const double openV = av(I, J, K) + av(I, J + 1, K);
+          if (openU <= 0.0 || openV <= 0.0) {
+            return;
+          }
           const double x = grid.coordinate(Staggering::Cell, 0, i) - cx;
           const double y = grid.coordinate(Staggering::Cell, 1, j) - cy;
           const double r = math::sqrt(x * x + y * y);
-          const double uc = 0.5 * (u(I, J, K) + u(I + 1, J, K));
-          const double vc = 0.5 * (v(I, J, K) + v(I, J + 1, K));
+          const double uc = (au(I, J, K) * u(I, J, K) + au(I + 1, J, K) * u(I + 1, J, K)) / openU;
+          const double vc = (av(I, J, K) * v(I, J, K) + av(I, J + 1, K) * v(I, J + 1, K)) / openV;
           const double bed = cap(I, J, K) * phi(I, J, K);
           s += bed * (-y * uc + x * vc) / (r * omega * r);
           w += bed;

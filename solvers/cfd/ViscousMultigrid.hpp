@@ -50,13 +50,16 @@ public:
 
   /// \brief Builds the hierarchy for alpha (per component on its faces; empty Views for
   /// alpha = 0) and cell viscosity mu on grid with velocity boundary conditions bc. The fields
-  /// are referenced, not copied (the edge viscosities are computed here).
+  /// are referenced, not copied (the edge viscosities are computed here). `open` (face
+  /// apertures, optional): the fine operator leaves out the stresses that read closed faces
+  /// (ViscousOperator.hpp); the coarse levels, a preconditioner only, keep them.
   ViscousMultigrid(ExecutionSpace const& space, Grid const& grid, VelocityBoundaries const& bc,
                    field_type const (&alpha)[3], field_type const& mu,
-                   MultigridOptions const& options = MultigridOptions())
+                   MultigridOptions const& options = MultigridOptions(),
+                   velocity_type const& open = velocity_type())
       : _space(space), _bc(bc), _options(options) {
     checkBoundaries(grid, bc);
-    setupLevels(grid, alpha, mu);
+    setupLevels(grid, alpha, mu, open);
     setupCoarseSolve();
   }
 
@@ -183,7 +186,8 @@ private:
     return v;
   }
 
-  void setupLevels(Grid const& grid, field_type const (&alpha)[3], field_type const& mu) {
+  void setupLevels(Grid const& grid, field_type const (&alpha)[3], field_type const& mu,
+                   velocity_type const& open) {
     const bool periodic[3] = {_bc.periodic(0), _bc.periodic(1), _bc.periodic(2)};
     const std::vector<LevelGeometry> geometry = coarsenGrids(grid, periodic, _options.coarsening);
     const bool hasAlpha = alpha[0].extent(0) > 0;
@@ -207,6 +211,7 @@ private:
       }
       if (l == 0) {
         level.op.mu = mu;
+        level.op.open = open;
         for (int c = 0; c < 3; ++c) {
           level.op.alpha[c] = alpha[c];
         }
@@ -230,7 +235,7 @@ private:
           }
         }
       }
-      edgeViscosities(_space, g, periodic, level.op.mu, level.op.muEdge);
+      edgeViscosities(_space, g, periodic, level.op.mu, level.op.muEdge, level.op.open);
       _levels.push_back(level);
     }
   }
