@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <stdexcept>
 
 namespace hikiln::calibrate {
@@ -129,6 +130,33 @@ GridFields readGridFields(const std::string& path, AveragesGrid grid) {
   if (validShape != shape)
     throw fileError(file, "dataset '" + validName + "' does not match the grid's shape");
   return fields;
+}
+
+WallProfile readWallProfile(const std::string& path, double omega, double drumRadius) {
+  const io::H5File file = io::H5File::openRead(path);
+  const auto read = [&](const std::string& name) {
+    const std::string dataset = "/wall/" + name;
+    if (!file.isDataset(dataset))
+      throw fileError(file, "missing dataset '" + dataset + "'");
+    return file.readDataset<double>(dataset);
+  };
+  const std::vector<double> theta = read("theta_centres");
+  WallProfile w;
+  w.normalStress = read("normal_stress");
+  w.shearStress = read("shear_stress");
+  const std::vector<double> speed = read("tangential_velocity");
+  if (w.normalStress.size() != theta.size() || w.shearStress.size() != theta.size() ||
+      speed.size() != theta.size())
+    throw fileError(file, "the /wall datasets differ in length from '/wall/theta_centres'");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double degreesPerRadian = 180.0 / std::acos(-1.0);
+  const double shellSpeed = omega * drumRadius;
+  for (std::size_t i = 0; i < theta.size(); ++i) {
+    w.thetaDeg.push_back(theta[i] * degreesPerRadian);
+    w.ratio.push_back(w.normalStress[i] > 0.0 ? w.shearStress[i] / w.normalStress[i] : nan);
+    w.slipPercent.push_back(shellSpeed != 0.0 ? 100.0 * (1.0 - speed[i] / shellSpeed) : nan);
+  }
+  return w;
 }
 
 calibration::CalibrationRun readRunHeader(const std::string& path) {

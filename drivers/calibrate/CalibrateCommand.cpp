@@ -85,6 +85,7 @@ nlohmann::json summaryOf(const calibration::CalibrationResult& result,
   s["min_strain_rate"] = options.minStrainRate;
   s["outputs"] = {{"rheology", fs::path(options.output).filename().string()},
                   {"csv", "calibration.csv"},
+                  {"wall_profile", "wall_profile.csv"},
                   {"fits", "calibration.json"}};
   nlohmann::json inputs = nlohmann::json::array();
   for (const CalibrationRun& run : runs) {
@@ -130,8 +131,12 @@ int runCalibrate(const CalibrateOptions& options) {
   refuseRunDirectoryAsOutput(outputDir, options.runs);
 
   std::vector<CalibrationRun> runs;
-  for (const std::string& argument : options.runs)
+  std::vector<WallProfile> walls;
+  for (const std::string& argument : options.runs) {
     runs.push_back(loadRun(argument, options));
+    const calibration::RunConditions& c = runs.back().conditions;
+    walls.push_back(readWallProfile(runs.back().path, c.omega, c.drumRadius));
+  }
   assignLabels(runs, options.runs);
   fs::create_directories(outputDir); // only once the inputs are known to be good
 
@@ -145,6 +150,8 @@ int runCalibrate(const CalibrateOptions& options) {
   io::writeTextAtomically(output.string(),
                           calibration::formatRheologyYaml(result, runs, fitOptions, provenance));
   io::writeTextAtomically((outputDir / "calibration.csv").string(), formatCalibrationCsv(runs));
+  io::writeTextAtomically((outputDir / "wall_profile.csv").string(),
+                          formatWallProfileCsv(runs, walls));
   nlohmann::json fits = calibration::calibrationToJson(result, runs, fitOptions);
   fits["hikiln_version"] = HIKILN_VERSION;
   fits["created"] = created;

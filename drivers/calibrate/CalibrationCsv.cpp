@@ -29,4 +29,17 @@ std::string formatCalibrationCsv(const std::vector<calibration::CalibrationRun>&
   return out;
 }
 
+std::string formatWallProfileCsv(const std::vector<calibration::CalibrationRun>& runs,
+                                 const std::vector<WallProfile>& walls) {
+  std::string out = "run,theta_deg,normal_stress,shear_stress,friction_ratio,slip_percent\n";
+  for (std::size_t r = 0; r < runs.size() && r < walls.size(); ++r) {
+    const WallProfile& w = walls[r];
+    const std::string label = csvField(runs[r].label);
+    for (std::size_t i = 0; i < w.thetaDeg.size(); ++i)
+      out += fmt::format("{},{},{},{},{},{}\n", label, w.thetaDeg[i], w.normalStress[i],
+                         w.shearStress[i], w.ratio[i], w.slipPercent[i]);
+  }
+  return out;
+}
+
 } // namespace hikiln::calibrate

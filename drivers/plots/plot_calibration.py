@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Plots of `hikiln calibrate`: the DEM scatter data and the fitted laws, one PNG each.
 
-Reads calibration.csv (one row per selected cell) and calibration.json (the fits), both written
-by `hikiln calibrate`. Written for Debian's python3 with python3-matplotlib and python3-numpy:
+Reads calibration.csv (one row per selected cell), calibration.json (the fits) and, when it is
+beside calibration.csv, wall_profile.csv (one row per shell bin), all written by
+`hikiln calibrate`. Written for Debian's python3 with python3-matplotlib and python3-numpy:
 
     /usr/bin/python3 plot_calibration.py --csv OUT/calibration.csv \
         --json OUT/calibration.json --out DIR
@@ -134,6 +135,37 @@ def friction_vs_inertial_number(runs, c, fits, out):
     finish(fig, ax, os.path.join(out, "m_vs_inertial_number.png"), "mu(I) form")
 
 
+def wall_profile(csv_path, fits, out):
+    """Friction ratio and slip along the shell per run (wall_profile.csv beside calibration.csv)."""
+    path = os.path.join(os.path.dirname(os.path.abspath(csv_path)), "wall_profile.csv")
+    if not os.path.exists(path):
+        return
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        return
+    runs = np.array([r["run"] for r in rows])
+    col = {k: np.array([float(r[k]) for r in rows]) for k in rows[0] if k != "run"}
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(6.5, 7), sharex=True)
+    for label in run_order(list(runs)):
+        # bins with at least 5 % of the run's largest normal stress: the rest is a few grazing
+        # contacts whose ratio is noise
+        mask = (runs == label) & (col["normal_stress"] >= 0.05 * col["normal_stress"][runs == label].max())
+        top.plot(col["theta_deg"][mask], col["friction_ratio"][mask], "o-", ms=3, label=label)
+        bottom.plot(col["theta_deg"][mask], col["slip_percent"][mask], "o-", ms=3, label=label)
+    mu_wall = fits.get("wall", {}).get("mu_wall")
+    if mu_wall is not None:
+        top.axhline(mu_wall, color="k", ls="--", label=f"mu_wall (shell average) {mu_wall:.3f}")
+    top.set_ylabel("shear / normal wall stress [-]")
+    bottom.set_ylabel("wall slip [%]")
+    bottom.set_xlabel("angle of the shell bin [deg]")
+    top.grid(True, alpha=0.3)
+    top.legend(fontsize="small")
+    top.set_title("Wall friction and slip along the shell\n(bins with >= 5 % of the run's largest "
+                  "normal stress)", fontsize="medium")
+    finish(fig, bottom, os.path.join(out, "wall_profile.png"), "")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--csv", required=True, help="calibration.csv")
@@ -149,6 +181,7 @@ def main():
     viscosity_vs_pressure(runs, cells, fits, args.out)
     friction_vs_strain_rate(runs, cells, fits, args.out)
     friction_vs_inertial_number(runs, cells, fits, args.out)
+    wall_profile(args.csv, fits, args.out)
 
 
 if __name__ == "__main__":

@@ -165,10 +165,15 @@ inline std::pair<std::size_t, std::size_t> writeSyntheticRun(const std::filesyst
     shear[i] = run.muWall * normal[i];
     speed[i] = (1.0 - run.slipPercent / 100.0) * run.omega * run.drumRadius;
   }
-  file.writeDataset("/wall/theta_centres", theta, {bins}, "rad");
-  file.writeDataset("/wall/normal_stress", normal, {bins}, "Pa");
-  file.writeDataset("/wall/shear_stress", shear, {bins}, "Pa");
-  file.writeDataset("/wall/tangential_velocity", speed, {bins}, "m/s");
+  const auto wallDataset = [&](const std::string& name, const std::vector<double>& values,
+                               const std::string& units) {
+    if (run.omit.count("/wall/" + name) == 0)
+      file.writeDataset("/wall/" + name, values, {bins}, units);
+  };
+  wallDataset("theta_centres", theta, "rad");
+  wallDataset("normal_stress", normal, "Pa");
+  wallDataset("shear_stress", shear, "Pa");
+  wallDataset("tangential_velocity", speed, "m/s");
   attribute("/wall", "mu_wall", run.muWall);
   attribute("/wall", "slip_percent", run.slipPercent);
   file.commit();

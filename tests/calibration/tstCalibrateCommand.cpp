@@ -13,6 +13,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
 
 namespace {
 using hikiln::calibrate::CalibrateOptions;
@@ -106,11 +109,36 @@ TEST(calibrate_command, rheology_file_reproduces_the_generating_law) {
   EXPECT_EQ(summary["cells"].get<std::size_t>(), runs.polarCells);
   EXPECT_NEAR(summary["mu_wall"].get<double>(), 0.33, 1e-15);
   EXPECT_FALSE(summary["inputs"][0]["dem_summary"].is_null());
-  // Nothing but the four outputs (no temporaries left behind).
+  EXPECT_EQ(summary["outputs"]["wall_profile"], "wall_profile.csv");
+  // The wall profile: per shell bin of every run, the generating ratio and slip.
+  std::ifstream wall((out / "wall_profile.csv").string());
+  std::string line;
+  std::getline(wall, line);
+  EXPECT_EQ(line, "run,theta_deg,normal_stress,shear_stress,friction_ratio,slip_percent");
+  const std::map<std::string, std::pair<double, double>> law = {
+      {"fill10", {0.30, 12.0}}, {"fill20", {0.33, 10.0}}, {"fill30", {0.36, 8.0}}};
+  std::size_t rows = 0;
+  while (std::getline(wall, line)) {
+    std::istringstream fields(line);
+    std::string run, value;
+    std::getline(fields, run, ',');
+    std::vector<double> v;
+    while (std::getline(fields, value, ','))
+      v.push_back(std::stod(value));
+    ASSERT_EQ(v.size(), 5u) << line;
+    ASSERT_EQ(law.count(run), 1u) << line;
+    EXPECT_NEAR(v[3], law.at(run).first, 1e-12) << line;
+    EXPECT_NEAR(v[4], law.at(run).second, 1e-9) << line;
+    EXPECT_GT(v[0], 0.0);
+    EXPECT_LT(v[0], 360.0);
+    ++rows;
+  }
+  EXPECT_EQ(rows, 3u * 36u);
+  // Nothing but the five outputs (no temporaries left behind).
   std::size_t entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(out))
     ++entries;
-  EXPECT_EQ(entries, 4u);
+  EXPECT_EQ(entries, 5u);
 }
 
 TEST(calibrate_command, cartesian_grid_gives_the_same_law) {
@@ -174,12 +202,18 @@ TEST(calibrate_command, missing_dataset_or_attribute_is_named) {
   options.grid = hikiln::calibrate::AveragesGrid::Cartesian;
   EXPECT_EQ(errorOf(options), "");
 
-  run.omit = {"/wall@mu_wall"};
-  writeSyntheticRun(dir.path() / "nowall", run);
-  options.runs = {dir.file("nowall")};
-  error = errorOf(options);
-  EXPECT_NE(error.find(dir.file("nowall/averages.h5")), std::string::npos) << error;
-  EXPECT_NE(error.find("mu_wall"), std::string::npos) << error;
+  // A run without a wall attribute or a wall dataset: the file and the missing piece are named.
+  const auto expectNamed = [&](const std::string& omitted, const std::string& folder,
+                               const std::string& named) {
+    run.omit = {omitted};
+    writeSyntheticRun(dir.path() / folder, run);
+    options.runs = {dir.file(folder)};
+    const std::string message = errorOf(options);
+    EXPECT_NE(message.find(dir.file(folder + "/averages.h5")), std::string::npos) << message;
+    EXPECT_NE(message.find(named), std::string::npos) << message;
+  };
+  expectNamed("/wall@mu_wall", "nowall", "mu_wall");
+  expectNamed("/wall/shear_stress", "noprofile", "'/wall/shear_stress'");
 }
 
 TEST(calibrate_command, too_few_valid_cells_is_named) {
