@@ -86,12 +86,21 @@ struct GranularRheology {
 /// its axis get the same gamma_dot even in the cut cells at the shell, whose discrete D keeps a
 /// trace (their forced faces are not divergence-free). Where tr(D) = 0 it is the DEM's 2D
 /// invariant sqrt((D_xx - D_yy)^2 + 4 D_xy^2).
+///
+/// With `open` (face apertures, as the viscous operator's; ViscousOperator.hpp), the strains that
+/// read a closed (shell-held) face are left out as the operator leaves out their stresses: a
+/// normal rate whose face is closed is 0, and the shear rate is the mean over the edges whose four
+/// faces are open (0 when none is). Ghost faces count as open (their values are the boundary's).
 template <class ExecutionSpace, class MemorySpace>
 void strainRateInvariant(ExecutionSpace const& space, Grid const& grid,
-                         VelocityFields<MemorySpace> const& u, Field<MemorySpace> const& out) {
+                         VelocityFields<MemorySpace> const& u, Field<MemorySpace> const& out,
+                         VelocityFields<MemorySpace> const& open = VelocityFields<MemorySpace>()) {
   const int dims = grid.is3D() ? 3 : 2;
   const int off[3] = {grid.ghost, grid.ghost, grid.ghostZ()};
+  const int n[3] = {grid.nx, grid.ny, grid.nz};
   const auto u0 = u.comp[0], u1 = u.comp[1], u2 = dims == 3 ? u.comp[2] : u.comp[0];
+  const bool masked = open.comp[0].extent(0) > 0;
+  const auto a0 = open.comp[0], a1 = open.comp[1], a2 = dims == 3 ? open.comp[2] : open.comp[0];
   Kokkos::parallel_for(
       "hikiln::cfd::strainRateInvariant", gridPolicy(space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
       KOKKOS_LAMBDA(const int i, const int j, const int k) {
@@ -101,16 +110,31 @@ void strainRateInvariant(ExecutionSpace const& space, Grid const& grid,
         const auto at = [&](int c, int const(&p)[3]) {
           return comp(c)(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
         };
+        // face of component c at p is open (always without apertures; ghost faces count as open)
+        const auto isOpen = [&](int c, int const(&p)[3]) {
+          if (!masked) {
+            return true;
+          }
+          for (int e = 0; e < dims; ++e) {
+            if (p[e] < 0 || p[e] >= n[e] + (e == c)) {
+              return true;
+            }
+          }
+          const auto& ap = c == 0 ? a0 : (c == 1 ? a1 : a2);
+          return ap(p[0] + off[0], p[1] + off[1], p[2] + off[2]) > 0.0;
+        };
         double d[3][3] = {};
         for (int a = 0; a < dims; ++a) {
           int p[3] = {i, j, k};
           const double low = at(a, p);
+          const bool lowOpen = isOpen(a, p);
           p[a] += 1;
-          d[a][a] = (at(a, p) - low) / grid.spacing(a);
+          d[a][a] = lowOpen && isOpen(a, p) ? (at(a, p) - low) / grid.spacing(a) : 0.0;
         }
         for (int a = 0; a < dims; ++a) {
           for (int b = a + 1; b < dims; ++b) {
             double sum = 0.0;
+            int edges = 0;
             for (int sa = 0; sa < 2; ++sa) {
               for (int sb = 0; sb < 2; ++sb) {
                 // edge at node (i_a + sa, i_b + sb): du_a/dx_b + du_b/dx_a
@@ -118,16 +142,23 @@ void strainRateInvariant(ExecutionSpace const& space, Grid const& grid,
                 p[a] += sa;
                 p[b] += sb;
                 const double uaHigh = at(a, p);
+                bool edgeOpen = isOpen(a, p);
                 p[b] -= 1;
                 const double uaLow = at(a, p);
+                edgeOpen = edgeOpen && isOpen(a, p);
                 p[b] += 1;
                 const double ubHigh = at(b, p);
+                edgeOpen = edgeOpen && isOpen(b, p);
                 p[a] -= 1;
                 const double ubLow = at(b, p);
-                sum += (uaHigh - uaLow) / grid.spacing(b) + (ubHigh - ubLow) / grid.spacing(a);
+                edgeOpen = edgeOpen && isOpen(b, p);
+                if (edgeOpen) {
+                  sum += (uaHigh - uaLow) / grid.spacing(b) + (ubHigh - ubLow) / grid.spacing(a);
+                  ++edges;
+                }
               }
             }
-            d[a][b] = d[b][a] = 0.125 * sum;
+            d[a][b] = d[b][a] = edges > 0 ? 0.5 * sum / edges : 0.0;
           }
         }
         const double trace = d[0][0] + d[1][1] + d[2][2];

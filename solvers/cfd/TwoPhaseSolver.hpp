@@ -15,8 +15,9 @@
 ///    rho (u* - u^n) / dt = -rho (u^n . grad) u^n + div(mu (grad u* + grad u*^T))
 ///    + Brinkman forcing to the shell velocity on faces that are not fully open.
 ///    Bed viscosities of 1e3-1e5 Pa s therefore do not limit dt. With the Coulomb wall, the
-///    viscous stresses that read a closed face are left out (ViscousOperator.hpp): the shell
-///    pulls on the bed only through the capped forcing on the cut faces, mu_wall sigma_n.
+///    viscous stresses (and in step 3 the strain rates) that read a closed face are left out
+///    (ViscousOperator.hpp): the shell pulls on the bed only through the capped forcing on the
+///    cut faces, mu_wall sigma_n.
 /// 5. Projection (CellMultigrid, PCG) for the full pressure with gravity
 ///    (non-incremental, balanced force): u** = u* + dt g, div(a / rho grad p) = div(a u**) / dt
 ///    with a the face apertures, u^{n+1} = u** - dt / rho grad p on open faces. Gravity and the
@@ -248,7 +249,7 @@ public:
     }
     const double muMax = maxAbsUnknowns(_space, _cells, _mu);
     WallFriction friction;
-    friction.enabled = _params.coulombWall && _params.constantBedViscosity == 0.0;
+    friction.enabled = coulombWallOn();
     friction.muWall = _params.rheology.muWall;
     for (int c = 0; c < dims(); ++c) {
       momentumPredictor(_space, _cut, _shape, c, _u, _rhoFace[c], dt, _params.penalty, muMax,
@@ -257,14 +258,8 @@ public:
     MultigridOptions vopt;
     vopt.tolerance = _params.viscousTolerance;
     vopt.maxIterations = _params.maxIterations;
-    velocity_type openFaces; // empty: the viscous stencil keeps its couplings to closed faces
-    if (friction.enabled) {
-      for (int c = 0; c < dims(); ++c) {
-        openFaces.comp[c] = _cut.aperture[c];
-      }
-    }
     ViscousMultigrid<ExecutionSpace> viscous(_space, _grid, _velocityBc, _alpha, _mu, vopt,
-                                             openFaces);
+                                             wallLawApertures());
     report.viscous = viscous.solvePcg(_uStar, _rhs);
     if (!report.viscous.converged) {
       throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: momentum solve did not converge (" +
@@ -463,11 +458,26 @@ private:
     faceDensities(_space, _grid, _periodic, _rho, _rhoFace);
   }
 
+  /// True when the shell acts through the Coulomb wall law (else it is a no-slip wall).
+  bool coulombWallOn() const { return _params.coulombWall && _params.constantBedViscosity == 0.0; }
+
+  /// The face apertures when the Coulomb wall is on, else empty: the viscous stresses and the
+  /// strain rates then leave out what reads a closed (shell-held) face (ViscousOperator.hpp).
+  velocity_type wallLawApertures() const {
+    velocity_type open;
+    if (coulombWallOn()) {
+      for (int c = 0; c < dims(); ++c) {
+        open.comp[c] = _cut.aperture[c];
+      }
+    }
+    return open;
+  }
+
   void updateViscosity() {
     for (int c = 0; c < dims(); ++c) {
       fillGhostsVelocity(_space, _grid, _velocityBc, c, _u.comp[c]);
     }
-    strainRateInvariant(_space, _grid, _u, _gammaDot);
+    strainRateInvariant(_space, _grid, _u, _gammaDot, wallLawApertures());
     bedPressure(_space, _cut, _phi, _p, _params.gasDensity, _params.gravity, _params.gasPhi, _pBed);
     GranularRheology rheology = _params.rheology;
     if (_params.constantBedViscosity > 0.0) {

@@ -3,8 +3,10 @@
 // - it stays symmetric and positive semi-definite: <A x, y> = <x, A y> and <A x, x> >= 0;
 // - changing the velocity on closed faces only leaves A x unchanged on every open face (the
 //   shell does not pull on the fluid through the viscous stencil), whereas the operator without
-//   the mask does change there (so the check can fail).
+//   the mask does change there (so the check can fail);
+// - the strain rate with the same apertures is blind to closed faces as well (every cell).
 #include "CfdTestUtils.hpp"
+#include "kernels/cfd/GranularRheology.hpp"
 #include "kernels/cfd/ShellGeometry.hpp"
 #include "kernels/cfd/ViscousOperator.hpp"
 
@@ -188,6 +190,48 @@ void checkClosedFaces(bool threeD) {
             << " (masked), " << plainChange << " (unmasked)\n";
   EXPECT_LT(maskedChange, 1e-14);
   EXPECT_GT(plainChange, 1e-2);
+}
+
+// Largest change of gamma_dot over all cells after a change on closed faces only, relative to
+// the largest gamma_dot; with or without the apertures.
+double strainRateChange(Case const& c, bool masked) {
+  const velocity x = randomVelocity(c, 11, false);
+  const velocity xk = sum(c, x, randomVelocity(c, 47, true));
+  velocity open;
+  for (int comp = 0; comp < c.dims; ++comp) {
+    open.comp[comp] = masked ? c.cut.aperture[comp] : field();
+  }
+  const field before = makeField(space{}, c.grid, Staggering::Cell, "hikiln::test::rate");
+  const field after = makeField(space{}, c.grid, Staggering::Cell, "hikiln::test::rate");
+  strainRateInvariant(space{}, c.grid, x, before, open);
+  strainRateInvariant(space{}, c.grid, xk, after, open);
+  const auto hb = test::toHost(before);
+  const auto ha = test::toHost(after);
+  double change = 0.0, scale = 0.0;
+  for (std::size_t n = 0; n < hb.span(); ++n) {
+    change = std::max(change, std::fabs(ha.data()[n] - hb.data()[n]));
+    scale = std::max(scale, std::fabs(hb.data()[n]));
+  }
+  return change / scale;
+}
+
+void checkStrainRate(bool threeD) {
+  const Case c = drumCase(threeD);
+  const double masked = strainRateChange(c, true);
+  const double plain = strainRateChange(c, false);
+  std::cout << (threeD ? "3D" : "2D")
+            << ": change of gamma_dot after a change on closed faces: " << masked << " (masked), "
+            << plain << " (unmasked)\n";
+  EXPECT_EQ(masked, 0.0);
+  EXPECT_GT(plain, 1e-2);
+}
+
+TEST(TEST_CATEGORY, strain_rate_closed_faces_2d) {
+  checkStrainRate(false);
+}
+
+TEST(TEST_CATEGORY, strain_rate_closed_faces_3d) {
+  checkStrainRate(true);
 }
 
 TEST(TEST_CATEGORY, viscous_closed_faces_2d) {
