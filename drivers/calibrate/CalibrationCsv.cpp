@@ -32,8 +32,8 @@ std::string formatCalibrationCsv(const std::vector<calibration::CalibrationRun>&
 std::string formatWallProfileCsv(const std::vector<calibration::CalibrationRun>& runs,
                                  const std::vector<WallProfile>& walls) {
   std::string out = "run,theta_deg,normal_stress,shear_stress,friction_ratio,slip_percent\n";
-  for (std::size_t r = 0; r < runs.size() && r < walls.size(); ++r) {
-    const WallProfile& w = walls[r];
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const WallProfile& w = walls.at(r);
     const std::string label = csvField(runs[r].label);
     for (std::size_t i = 0; i < w.thetaDeg.size(); ++i)
       out += fmt::format("{},{},{},{},{},{}\n", label, w.thetaDeg[i], w.normalStress[i],
