@@ -32,7 +32,7 @@ sudo_if_needed() { if [ "$(id -u)" = 0 ]; then "$@"; else sudo "$@"; fi; }
 # 1. Debian packages ------------------------------------------------------------------------------
 packages="build-essential cmake ninja-build pkg-config git libeigen3-dev libhdf5-dev libgtest-dev
   libgmock-dev libbenchmark-dev libyaml-cpp-dev libcli11-dev libfmt-dev libspdlog-dev nlohmann-json3-dev
-  python3 python3-numpy python3-matplotlib python3-h5py"
+  python3 python3-numpy python3-matplotlib python3-h5py python3-skimage"
 if [ "${HIKILN_SKIP_APT:-0}" != 1 ]; then
   # shellcheck disable=SC2086
   missing=$(for p in $packages; do dpkg-query -W -f='${Status}\n' "$p" 2>/dev/null | grep -q 'ok installed' || echo "$p"; done)

@@ -30,6 +30,9 @@ void addSweepCommand(CLI::App& app, Action& action);
 /// \brief `hikiln continuum CASE -o DIR`: the 2D two-phase continuum model of a drum.
 void addContinuumCommand(CLI::App& app, Action& action);
 
+/// \brief `hikiln kiln CASE -o DIR`: the 3D two-phase continuum model of a rotary kiln.
+void addKilnCommand(CLI::App& app, Action& action);
+
 /// \brief `hikiln compare DEM_RUN CONTINUUM_RUN... -o DIR`: DEM vs continuum (physics.md 5).
 void addCompareCommand(CLI::App& app, Action& action);
 

@@ -2,6 +2,7 @@
 // so the documentation can never drift from what the program accepts.
 #include "drivers/app/Commands.hpp"
 #include "drivers/cfd/ContinuumCase.hpp"
+#include "drivers/cfd/KilnCase.hpp"
 #include "drivers/dem/DemCase.hpp"
 
 #include <iostream>
@@ -12,11 +13,15 @@ namespace hikiln::app {
 void addSchemaCommand(CLI::App& app, Action& action) {
   auto* cmd = app.add_subcommand("schema", "Print the case-file reference of a stage (Markdown)");
   auto stage = std::make_shared<std::string>();
-  cmd->add_option("stage", *stage, "Stage")->required()->check(CLI::IsMember({"dem", "continuum"}));
+  cmd->add_option("stage", *stage, "Stage")
+      ->required()
+      ->check(CLI::IsMember({"dem", "continuum", "kiln"}));
   cmd->callback([&action, stage] {
     action = [stage] {
-      std::cout << (*stage == "continuum" ? cfd::continuumSchema() : dem::demSchema())
-                       .markdownReference();
+      const cases::CaseSchema& schema = *stage == "continuum" ? cfd::continuumSchema()
+                                        : *stage == "kiln"    ? cfd::kilnSchema()
+                                                              : dem::demSchema();
+      std::cout << schema.markdownReference();
       return 0;
     };
   });

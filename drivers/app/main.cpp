@@ -35,6 +35,7 @@ int main(int argc, char* argv[]) {
   hikiln::app::addSweepCommand(app, action);
   hikiln::app::addCalibrateCommand(app, action);
   hikiln::app::addContinuumCommand(app, action);
+  hikiln::app::addKilnCommand(app, action);
   hikiln::app::addCompareCommand(app, action);
   hikiln::app::addFitDiffusivityCommand(app, action);
   hikiln::app::addSchemaCommand(app, action);

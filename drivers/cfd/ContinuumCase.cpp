@@ -1,17 +1,15 @@
 #include "drivers/cfd/ContinuumCase.hpp"
 
-#include "solvers/calibration/RheologyFile.hpp"
+#include "drivers/cfd/TwoPhaseKeys.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <stdexcept>
 
 namespace hikiln::cfd {
 
 namespace {
 using cases::Bounds;
-namespace fs = std::filesystem;
 
 cases::CaseSchema buildSchema() {
   cases::CaseSchema s("continuum");
@@ -31,56 +29,7 @@ cases::CaseSchema buildSchema() {
       .defaultsTo("64")
       .doc("Cells across the square domain (drum plus 2 cells each side); powers of 2 suit "
            "the multigrid best");
-  s.real("material.solid_density")
-      .unit("kg/m^3")
-      .positive()
-      .defaultsTo("2700")
-      .doc("Grain material density (bed density = phi_max x this)");
-  s.real("material.phi_max")
-      .unit("fraction")
-      .range(0, 1, Bounds::OpenMin)
-      .defaultsTo("0.6")
-      .doc("Solids volume fraction of the settled bed");
-  s.real("material.settling_velocity")
-      .unit("m/s")
-      .nonNegative()
-      .defaultsTo("0.5")
-      .doc("Grains falling through the gas (drift flux; keeps the bed surface sharp)");
-  s.real("gas.density").unit("kg/m^3").positive().defaultsTo("1.2").doc("Gas density");
-  s.real("gas.viscosity").unit("Pa s").positive().defaultsTo("1.8e-5").doc("Gas viscosity");
-  s.string("rheology.file")
-      .defaultsTo("\"\"")
-      .doc("Rheology file of `hikiln calibrate` (relative to this file); empty: the keys below");
-  s.real("rheology.m0")
-      .unit("1")
-      .nonNegative()
-      .defaultsTo("0.55")
-      .doc("Drucker-Prager friction m at zero strain rate (m = m0 + m1 gamma_dot)");
-  s.real("rheology.m1")
-      .unit("s")
-      .defaultsTo("0.0")
-      .doc("dm / d gamma_dot (m is floored at 0 when negative)");
-  s.real("rheology.mu_wall")
-      .unit("1")
-      .nonNegative()
-      .defaultsTo("0.35")
-      .doc("Bed-shell Coulomb friction coefficient");
-  s.real("rheology.strain_rate_floor")
-      .unit("1/s")
-      .positive()
-      .defaultsTo("1e-3")
-      .doc("Regularisation: eta = m p / max(gamma_dot, floor)");
-  s.real("rheology.viscosity_max")
-      .unit("Pa s")
-      .positive()
-      .defaultsTo("1e5")
-      .doc("Cap of the bed viscosity");
-  s.real("numerics.cfl")
-      .unit("1")
-      .range(0, 1, Bounds::OpenMin)
-      .defaultsTo("0.5")
-      .doc("Largest outflow per step over a cell's capacity");
-  s.real("numerics.dt_max").unit("s").positive().defaultsTo("0.01").doc("Largest time step");
+  addTwoPhaseKeys(s);
   s.real("time.duration").unit("s").positive().defaultsTo("10").doc("Simulated time");
   s.real("time.output_interval")
       .unit("s")
@@ -116,9 +65,6 @@ cases::CaseSchema buildSchema() {
       .doc("Gas thermal conductivity");
   s.real("heat.initial_left").unit("K").positive().defaultsTo("673").doc("Initial T, x < 0");
   s.real("heat.initial_right").unit("K").positive().defaultsTo("1073").doc("Initial T, x >= 0");
-  s.require("viscosity_max above the gas viscosity", [](const cases::CaseFile& c) {
-    return c.real("rheology.viscosity_max") > c.real("gas.viscosity");
-  });
   s.require("output_interval at most the duration", [](const cases::CaseFile& c) {
     return c.real("time.output_interval") <= c.real("time.duration");
   });
@@ -144,41 +90,10 @@ ContinuumSettings continuumSettingsFromCase(const cases::CaseFile& c) {
   s.initialLeft = c.real("heat.initial_left");
   s.initialRight = c.real("heat.initial_right");
   TwoPhaseParameters& p = s.params;
-  p.solidDensity = c.real("material.solid_density");
-  p.gasDensity = c.real("gas.density");
   p.gravity[0] = 0.0;
   p.gravity[1] = -c.real("gravity");
   p.gravity[2] = 0.0;
-  p.settlingVelocity = c.real("material.settling_velocity");
-  p.cfl = c.real("numerics.cfl");
-  p.dtMax = c.real("numerics.dt_max");
-  GranularRheology& r = p.rheology;
-  r.phiMax = c.real("material.phi_max");
-  r.gasViscosity = c.real("gas.viscosity");
-  r.m0 = c.real("rheology.m0");
-  r.m1 = c.real("rheology.m1");
-  r.muWall = c.real("rheology.mu_wall");
-  r.strainRateFloor = c.real("rheology.strain_rate_floor");
-  r.viscosityMax = c.real("rheology.viscosity_max");
-  s.rheologySource = "case file";
-  const std::string file = c.string("rheology.file");
-  if (!file.empty()) {
-    fs::path path(file);
-    if (path.is_relative()) {
-      path = fs::path(c.source()).parent_path() / path;
-    }
-    const calibration::RheologyParameters fit = calibration::loadRheologyFile(path.string());
-    if (fit.m0 < 0.0 || fit.muWall < 0.0) {
-      throw std::runtime_error(path.string() + ": m0 and mu_wall must be >= 0 for the continuum");
-    }
-    r.m0 = fit.m0;
-    r.m1 = fit.m1;
-    r.muWall = fit.muWall;
-    if (fit.strainRateFloor > 0.0) {
-      r.strainRateFloor = fit.strainRateFloor;
-    }
-    s.rheologySource = path.string();
-  }
+  s.rheologySource = readTwoPhaseKeys(c, p);
   p.energy = c.boolean("heat.enabled");
   p.thermal.alphaEff = c.real("heat.alpha_eff");
   p.thermal.solidHeatCapacity = c.real("heat.solid_heat_capacity");

@@ -3,6 +3,7 @@
 #include "drivers/app/Commands.hpp"
 #include "drivers/case/CaseFile.hpp"
 #include "drivers/cfd/ContinuumCase.hpp"
+#include "drivers/cfd/StepStatistics.hpp"
 #include "drivers/dem/TimeSeries.hpp"
 #include "drivers/io/Hdf5File.hpp"
 #include "drivers/io/Summary.hpp"
@@ -154,9 +155,8 @@ int runContinuum(ContinuumRunOptions const& o) {
   const double heat0 = solver.heat();
   double worstSolids = 0.0, worstHeat = 0.0, phiLo = 0.0, phiHi = 0.0, slipSum = 0.0;
   int mostHeatSubsteps = 0;
-  double minDt = 1e300, maxDt = 0.0, maxDivergence = 0.0;
-  std::int64_t steps = 0, slipSamples = 0, viscousIterations = 0, pressureIterations = 0;
-  std::map<std::string, std::int64_t> limits;
+  std::int64_t slipSamples = 0;
+  StepStatistics stats;
   std::vector<io::XdmfGridStep> outputs;
   dem::TimeSeries series((out / "timeseries.csv").string(),
                          {"time", "dt", "wall_slip", "solids_change", "max_speed"});
@@ -169,20 +169,9 @@ int runContinuum(ContinuumRunOptions const& o) {
   double nextOutput = s.outputInterval;
   while (solver.time() < s.duration * (1.0 - 1e-12)) {
     std::string reason;
-    double dt = solver.stableTimeStep(reason);
-    // land on the output times (a shorter step is always stable)
-    if (solver.time() + dt > nextOutput) {
-      dt = nextOutput - solver.time();
-      reason += ", shortened to an output time";
-    }
+    const double dt = landOn(solver.time(), solver.stableTimeStep(reason), nextOutput, reason);
     const TwoPhaseStepReport r = solver.step(dt);
-    ++steps;
-    ++limits[reason.substr(0, reason.find(','))];
-    minDt = std::min(minDt, dt);
-    maxDt = std::max(maxDt, dt);
-    maxDivergence = std::max(maxDivergence, r.maxDivergence);
-    viscousIterations += r.viscous.iterations;
-    pressureIterations += r.pressure.iterations;
+    stats.add(dt, reason, r);
     worstSolids = std::max(worstSolids, std::fabs(r.solidsAfter - r.solidsBefore) / solids0);
     if (s.params.energy && r.heatBefore != 0.0) {
       worstHeat = std::max(worstHeat, std::fabs(r.heatAfter - r.heatBefore) / r.heatBefore);
@@ -208,7 +197,7 @@ int runContinuum(ContinuumRunOptions const& o) {
       solver.phiRange(phiLo, phiHi);
       spdlog::info("t = {:.2f} s: step {} (dt {:.3g} s, {}), wall slip {:.1f} %, max speed "
                    "{:.3f} m/s, phi in [{:.3g}, {:.4g}], solids change {:.2e}",
-                   solver.time(), steps, dt, reason, 100.0 * slip, speed, phiLo, phiHi,
+                   solver.time(), stats.steps, dt, reason, 100.0 * slip, speed, phiLo, phiHi,
                    (solver.solids() - solids0) / solids0);
     }
   }
@@ -223,10 +212,7 @@ int runContinuum(ContinuumRunOptions const& o) {
   summary["cell_size"] = grid.hx;
   summary["rheology_source"] = s.rheologySource;
   summary["simulated_time"] = solver.time();
-  summary["steps"] = steps;
-  summary["dt_min"] = minDt;
-  summary["dt_max"] = maxDt;
-  summary["dt_limited_by"] = limits;
+  stats.writeTo(summary, loopSeconds, grid.numCells());
   summary["wall_slip_percent"] =
       slipSamples > 0 ? nlohmann::json(100.0 * slipSum / slipSamples) : nlohmann::json(nullptr);
   summary["wall_slip_samples"] = slipSamples;
@@ -234,23 +220,18 @@ int runContinuum(ContinuumRunOptions const& o) {
   summary["solids_relative_change_worst_step"] = worstSolids;
   summary["phi_min"] = phiLo;
   summary["phi_max"] = phiHi;
-  summary["max_divergence"] = maxDivergence;
   if (s.params.energy) {
     summary["heat_relative_change_total"] = (solver.heat() - heat0) / heat0;
     summary["heat_relative_change_worst_step"] = worstHeat;
     summary["heat_advection_substeps_max"] = mostHeatSubsteps;
   }
-  summary["mean_viscous_iterations"] = steps > 0 ? double(viscousIterations) / steps : 0.0;
-  summary["mean_pressure_iterations"] = steps > 0 ? double(pressureIterations) / steps : 0.0;
   summary["wall_seconds"] = secondsSince(wallStart);
-  summary["seconds_per_step"] = steps > 0 ? loopSeconds / steps : 0.0;
-  summary["cell_updates_per_second"] =
-      loopSeconds > 0.0 ? double(grid.numCells()) * steps / loopSeconds : 0.0;
   summary["outputs"] = {{"fields", "fields.xmf"}, {"timeseries", "timeseries.csv"}};
   io::writeSummaryJson((out / "summary.json").string(), summary);
   spdlog::info("continuum: {} steps to t = {:.2f} s in {:.1f} s ({:.3g} cell-updates/s); wall "
                "slip {} %; solids change {:.2e}; outputs in {}",
-               steps, solver.time(), loopSeconds, summary["cell_updates_per_second"].get<double>(),
+               stats.steps, solver.time(), loopSeconds,
+               summary["cell_updates_per_second"].get<double>(),
                slipSamples > 0 ? fmt::format("{:.1f}", 100.0 * slipSum / slipSamples) : "n/a",
                (solver.solids() - solids0) / solids0, o.outputDirectory);
   return 0;

@@ -148,7 +148,7 @@ inline void scalarClosures(Grid const& grid, ScalarBoundaries const& bc, AxisClo
 
 /// \brief The closures of MAC velocity component `component` with boundary conditions bc: the
 /// normal component is given on non-periodic sides (DirichletNode), the tangential ones are
-/// no-slip with the side's velocity (DirichletCell).
+/// no-slip with the side's velocity (DirichletCell), or zero-gradient at an Outflow side.
 inline void velocityClosures(Grid const& grid, VelocityBoundaries const& bc, int component,
                              AxisClosure (&axes)[3]) {
   for (int a = 0; a < 3; ++a) {
@@ -158,9 +158,15 @@ inline void velocityClosures(Grid const& grid, VelocityBoundaries const& bc, int
     c.node = a == component;
     c.periodic = bc.periodic(a);
     c.active = a < 2 || grid.is3D();
-    const ClosureKind kind = c.node ? ClosureKind::DirichletNode : ClosureKind::DirichletCell;
-    c.low = kind;
-    c.high = kind;
+    // the normal component's boundary nodes are data; tangential components are no-slip, or
+    // free (zero gradient) at an Outflow side
+    const auto kindOf = [&](BoundaryKind k) {
+      return c.node
+                 ? ClosureKind::DirichletNode
+                 : (k == BoundaryKind::Outflow ? ClosureKind::Neumann : ClosureKind::DirichletCell);
+    };
+    c.low = kindOf(bc.kind[2 * a]);
+    c.high = kindOf(bc.kind[2 * a + 1]);
     c.lowValue = bc.velocity[2 * a][component];
     c.highValue = bc.velocity[2 * a + 1][component];
   }

@@ -121,10 +121,17 @@ void fillGhostsScalar(ExecutionSpace const& space, Grid const& grid, ScalarBound
 template <class ExecutionSpace, class MemorySpace>
 void fillGhostsVelocity(ExecutionSpace const& space, Grid const& grid, VelocityBoundaries const& bc,
                         int component, Field<MemorySpace> const& field) {
-  const auto rule = [](BoundaryKind k) {
-    return k == BoundaryKind::Periodic ? GhostRule::Periodic : GhostRule::Odd;
-  };
   for (int a = 0; a < (grid.is3D() ? 3 : 2); ++a) {
+    // Inflow and Outflow keep the normal component's boundary nodes (data) and mirror the
+    // ghosts; an Outflow's tangential components have zero gradient
+    const auto rule = [&](BoundaryKind k) {
+      if (k == BoundaryKind::Periodic) {
+        return GhostRule::Periodic;
+      }
+      const bool open = k == BoundaryKind::Inflow || k == BoundaryKind::Outflow;
+      return (open && a == component) || k == BoundaryKind::Outflow ? GhostRule::Even
+                                                                    : GhostRule::Odd;
+    };
     fillGhostsAlong(space, grid, faceStaggering(component), a, rule(bc.kind[2 * a]),
                     bc.velocity[2 * a][component], rule(bc.kind[2 * a + 1]),
                     bc.velocity[2 * a + 1][component], field);

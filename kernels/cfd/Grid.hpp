@@ -155,7 +155,12 @@ GridPolicy<ExecutionSpace> gridPolicy(ExecutionSpace const& space, int const (&l
 ///   wall's (tangential) velocity.
 /// - Periodic: the opposite side continues the domain (must be set on both sides of an axis).
 /// - Value: a given value (scalar Dirichlet; velocity: a prescribed velocity vector, e.g. inflow).
-enum class BoundaryKind : int { Wall = 0, Periodic = 1, Value = 2 };
+/// - Inflow (velocity only): the normal velocity varies over the side and is data kept in the
+///   field's boundary nodes (set by the caller, never overwritten by ghost fills); tangential
+///   components as for Wall.
+/// - Outflow (velocity only): the normal velocity is data in the boundary nodes (set by the
+///   caller, e.g. the projection); tangential components have zero normal gradient.
+enum class BoundaryKind : int { Wall = 0, Periodic = 1, Value = 2, Inflow = 3, Outflow = 4 };
 
 /// \brief Side numbering: 2 * axis + (0 low, 1 high).
 enum Side : int { XLow = 0, XHigh = 1, YLow = 2, YHigh = 3, ZLow = 4, ZHigh = 5 };

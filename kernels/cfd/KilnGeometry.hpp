@@ -35,12 +35,14 @@ struct KilnShell : DrumShell {
     if (!(z > zInlet && z < zOutlet) || !DrumShell::inside(x, y, z)) {
       return false;
     }
-    if (damHeight > 0.0 && z > zOutlet - damWidth) {
-      const double dx = x - cx, dy = y - cy;
-      const double opening = radius - damHeight;
-      return dx * dx + dy * dy < opening * opening;
-    }
-    return true;
+    return damHeight > 0.0 && z > zOutlet - damWidth ? inDischargeOpening(x, y) : true;
+  }
+  /// \brief True when (x, y) lies in the open part of the discharge face: inside the dam ring's
+  /// opening (radius - damHeight), or the shell without a ring.
+  KOKKOS_INLINE_FUNCTION bool inDischargeOpening(double x, double y) const {
+    const double dx = x - cx, dy = y - cy;
+    const double opening = radius - damHeight;
+    return dx * dx + dy * dy < opening * opening;
   }
 
   /// \brief Kiln length zOutlet - zInlet.
@@ -114,6 +116,34 @@ struct KilnInlet {
   KOKKOS_INLINE_FUNCTION double axialVelocity(double x, double y) const {
     const InletPatch p = patch(x, y);
     return p == InletPatch::Feed ? feedVelocity : (p == InletPatch::Air ? airVelocity : 0.0);
+  }
+  /// \brief Solids volume fraction flowing in at (x, y): feedPhi on the feed patch, else 0.
+  KOKKOS_INLINE_FUNCTION double inflowPhi(double x, double y) const {
+    return patch(x, y) == InletPatch::Feed ? feedPhi : 0.0;
+  }
+};
+
+/// \brief The kiln as the continuum solver's shape with open ends (CutCellOptions::open on the
+/// z sides): beyond the inlet face (z <= zInlet) only the feed and air patches are fluid, so the
+/// inlet face's boundary faces are open over the patches and closed over the end wall; beyond
+/// the discharge face (z >= zOutlet) the discharge opening is fluid when the outlet is open.
+/// Inside, the shell with its dam ring. The grid's z range must be [zInlet, zOutlet].
+struct KilnDomain {
+  KilnShell shell;
+  KilnInlet inlet;
+  bool openOutlet = true;
+
+  KOKKOS_INLINE_FUNCTION bool inside(double x, double y, double z) const {
+    if (z <= shell.zInlet) {
+      return inlet.patch(x, y) != InletPatch::Wall;
+    }
+    if (z >= shell.zOutlet) {
+      return openOutlet && shell.DrumShell::inside(x, y, z) && shell.inDischargeOpening(x, y);
+    }
+    return shell.inside(x, y, z);
+  }
+  KOKKOS_INLINE_FUNCTION double wallVelocity(int c, double x, double y, double z) const {
+    return shell.wallVelocity(c, x, y, z);
   }
 };
 

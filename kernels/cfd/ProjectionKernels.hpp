@@ -237,7 +237,8 @@ void pressureCoefficients(ExecutionSpace const& space, CutCells<MemorySpace> con
       });
 }
 
-/// \brief u -= dt / rho_f dq/dx on the open faces of every axis.
+/// \brief u -= dt / rho_f dq/dx on the open faces of every axis. An open boundary face of a
+/// non-periodic axis (a kiln's end) reads q's ghost cell: fill q's ghosts first there.
 template <class ExecutionSpace, class MemorySpace>
 void correctVelocity(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
                      Field<MemorySpace> const (&rhoFace)[3], double dt, Field<MemorySpace> const& q,
@@ -249,6 +250,7 @@ void correctVelocity(ExecutionSpace const& space, CutCells<MemorySpace> const& c
     const auto rf = rhoFace[a];
     const auto ua = u.comp[a];
     const int n = grid.cells(a);
+    const bool periodic = cc.periodic[a];
     const double h = grid.spacing(a);
     const int hi[3] = {grid.nx + (a == 0), grid.ny + (a == 1), grid.nz + (a == 2)};
     Kokkos::parallel_for(
@@ -259,8 +261,10 @@ void correctVelocity(ExecutionSpace const& space, CutCells<MemorySpace> const& c
             return;
           }
           int idx[3] = {i, j, k};
-          int below, above;
-          cellsBesideFace(idx[a], n, true, below, above);
+          int below = idx[a] - 1, above = idx[a];
+          if (periodic) {
+            cellsBesideFace(idx[a], n, true, below, above);
+          }
           idx[a] = below;
           const double qb = q(idx[0] + off[0], idx[1] + off[1], idx[2] + off[2]);
           idx[a] = above;
@@ -268,6 +272,24 @@ void correctVelocity(ExecutionSpace const& space, CutCells<MemorySpace> const& c
           ua(I, J, K) -= dt / rf(I, J, K) * (qa - qb) / h;
         });
   }
+}
+
+/// \brief q = rho_gas g.x in every cell, ghosts included: the pressure of the gas at rest (up to
+/// a constant). Its gradient on any face is exactly rho_gas g.
+template <class ExecutionSpace, class MemorySpace>
+void gasHead(ExecutionSpace const& space, Grid const& grid, double rhoGas,
+             double const (&gravity)[3], Field<MemorySpace> const& q) {
+  const int g = grid.ghost, gz = grid.ghostZ();
+  const double g0 = gravity[0], g1 = gravity[1], g2 = gravity[2];
+  Kokkos::parallel_for(
+      "hikiln::cfd::gasHead",
+      gridPolicy(space, {-g, -g, -gz}, {grid.nx + g, grid.ny + g, grid.nz + gz}),
+      KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        const double x = grid.coordinate(Staggering::Cell, 0, i);
+        const double y = grid.coordinate(Staggering::Cell, 1, j);
+        const double z = grid.coordinate(Staggering::Cell, 2, k);
+        q(i + g, j + g, k + gz) = rhoGas * (g0 * x + g1 * y + g2 * z);
+      });
 }
 
 /// \brief p - rho_gas g.x at a cell: constant through a gas at rest.

@@ -31,6 +31,7 @@
 #include <Kokkos_Core.hpp>
 
 #include <stdexcept>
+#include <string>
 
 namespace hikiln::cfd {
 
@@ -71,6 +72,10 @@ struct CutCellOptions {
   int faceSamples = 1024; ///< sample points per face edge (apertures; at most 32 in 3D)
   double minVolume = 0.5; ///< smallest capacity of a cell with an open face
   bool periodic[3] = {false, false, true}; ///< periodic axes (their boundary faces stay open)
+  /// open non-periodic sides (2 axis + 0 low / 1 high, e.g. a kiln's inlet and discharge
+  /// faces): their boundary faces are measured like interior faces, the shape saying what lies
+  /// beyond the grid; the other non-periodic sides are closed walls
+  bool open[6] = {false, false, false, false, false, false};
 };
 
 /// \brief Volume fractions and face apertures of a shape on a grid (see the file comment).
@@ -84,6 +89,9 @@ template <class MemorySpace> struct CutCells {
   /// aperture x velocity is the exact flux of a linear (rigid-rotation) wall velocity
   Field<MemorySpace> centroid[3][3];
   Field<MemorySpace> wallLayer; ///< 1 in fluid cells touching the wall, else 0
+  /// periodic axes; an open boundary face of a non-periodic axis (CutCellOptions::open) lies
+  /// between an interior cell and a ghost cell holding what flows in or out
+  bool periodic[3] = {false, false, true};
 };
 
 /// \brief Measures the cut cells of `shape` on grid (ghosts of every field left 0).
@@ -96,9 +104,18 @@ buildCutCells(ExecutionSpace const& space, Grid const& grid, Shape const& shape,
     throw std::invalid_argument("hikiln::cfd::buildCutCells: samples must be >= 1 and "
                                 "minVolume in (0, 1]");
   }
+  for (int side = 0; side < 6; ++side) {
+    if (options.open[side] && options.periodic[side / 2]) {
+      throw std::invalid_argument("hikiln::cfd::buildCutCells: side " + std::to_string(side) +
+                                  " cannot be both open and periodic");
+    }
+  }
   using memory_space = typename ExecutionSpace::memory_space;
   CutCells<memory_space> cc;
   cc.grid = grid;
+  for (int a = 0; a < 3; ++a) {
+    cc.periodic[a] = options.periodic[a];
+  }
   cc.volume = makeField(space, grid, Staggering::Cell, "hikiln::cfd::cut::volume");
   cc.capacity = makeField(space, grid, Staggering::Cell, "hikiln::cfd::cut::capacity");
   cc.wallLayer = makeField(space, grid, Staggering::Cell, "hikiln::cfd::cut::wallLayer");
@@ -137,6 +154,7 @@ buildCutCells(ExecutionSpace const& space, Grid const& grid, Shape const& shape,
     }
     const auto cx = cc.centroid[axis][0], cy = cc.centroid[axis][1], cz = cc.centroid[axis][2];
     const bool periodic = options.periodic[axis];
+    const bool openLow = options.open[2 * axis], openHigh = options.open[2 * axis + 1];
     const int n = grid.cells(axis);
     const double sideOffset = 1e-9 * grid.spacing(axis);
     const int hi[3] = {grid.nx + (axis == 0), grid.ny + (axis == 1), grid.nz + (axis == 2)};
@@ -149,7 +167,7 @@ buildCutCells(ExecutionSpace const& space, Grid const& grid, Shape const& shape,
           cx(i + g, j + g, k + gz) = grid.coordinate(st, 0, i);
           cy(i + g, j + g, k + gz) = grid.coordinate(st, 1, j);
           cz(i + g, j + g, k + gz) = grid.coordinate(st, 2, k);
-          if (!periodic && (face == 0 || face == n)) {
+          if (!periodic && ((face == 0 && !openLow) || (face == n && !openHigh))) {
             ap(i + g, j + g, k + gz) = 0.0;
             return;
           }

@@ -9,7 +9,9 @@
 /// limiting the antidiffusive difference so that no cell leaves the range of its own and its
 /// open neighbours' old and low-order values (and [0, phiMax]); the scheme stays in flux form, so
 /// the solids content sum(capacity x phi) changes only through the (zero) wall fluxes (capacity:
-/// the cell volume fraction, at least minVolume, ShellGeometry.hpp).
+/// the cell volume fraction, at least minVolume, ShellGeometry.hpp) and the upwind fluxes
+/// through open ends (a kiln's feed and discharge; boundarySolidsFlux), whose ghost cells hold
+/// the inflow's phi.
 /// Fluxes are aperture x face velocity (ShellGeometry.hpp). Bounds hold when the face fluxes
 /// are divergence-free (to the projection's tolerance) and the outflow of every cell per step
 /// is at most its fluid volume (see maxCourantRate).
@@ -109,6 +111,7 @@ void fctFaceFluxes(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
   const int g = grid.ghost, gz = grid.ghostZ();
   const auto ap = cc.aperture[axis];
   const int n = grid.cells(axis);
+  const bool periodic = cc.periodic[axis];
   const double h = grid.spacing(axis);
   const int hi[3] = {grid.nx + (axis == 0), grid.ny + (axis == 1), grid.nz + (axis == 2)};
   Kokkos::parallel_for(
@@ -121,12 +124,14 @@ void fctFaceFluxes(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
           anti(I, J, K) = 0.0;
           return;
         }
-        // cells below and above the face (wrapped: an open boundary face is periodic)
+        // cells below and above the face: wrapped on a periodic axis; an open boundary face of
+        // a non-periodic axis reads the ghost cell, which holds what flows in
         int idx[3] = {i, j, k};
         const int face = idx[axis];
-        idx[axis] = face - 1 < 0 ? n - 1 : face - 1;
+        const bool openEnd = !periodic && (face == 0 || face == n);
+        idx[axis] = face - 1 < 0 && periodic ? n - 1 : face - 1;
         const double below = phi(idx[0] + g, idx[1] + g, idx[2] + gz);
-        idx[axis] = face >= n ? 0 : face;
+        idx[axis] = face >= n && periodic ? 0 : face;
         const double above = phi(idx[0] + g, idx[1] + g, idx[2] + gz);
         const double vel = u(I, J, K);
         const double up = vel >= 0.0 ? below : above;
@@ -134,6 +139,12 @@ void fctFaceFluxes(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
         const double courant = math::fabs(vel) * dt / h;
         const double high = up + (1.0 - courant) * (down - up);
         const double flux = open * vel * dt / h;
+        if (openEnd) {
+          // in- and outflow upwind only (no limiter reaches beyond the grid), no settling
+          low(I, J, K) = flux * up;
+          anti(I, J, K) = 0.0;
+          return;
+        }
         // drift: settling < 0 moves grains from the cell above to the one below
         const double from = settling < 0.0 ? above : below;
         const double to = settling < 0.0 ? below : above;
@@ -186,6 +197,7 @@ void transportVolumeFraction(ExecutionSpace const& space, CutCells<MemorySpace> 
             v > 0.0 ? phi(I, J, K) - detail::netOutflow(l0, l1, l2, dims, I, J, K) / v : 0.0;
       });
   const int n[3] = {grid.nx, grid.ny, grid.nz};
+  const bool periodic[3] = {cc.periodic[0], cc.periodic[1], cc.periodic[2]};
   Kokkos::parallel_for(
       "hikiln::cfd::fctLimiter", cells, KOKKOS_LAMBDA(const int i, const int j, const int k) {
         const int I = i + g, J = j + g, K = k + gz;
@@ -209,7 +221,12 @@ void transportVolumeFraction(ExecutionSpace const& space, CutCells<MemorySpace> 
             }
             int nb[3] = {idx[0], idx[1], idx[2]};
             nb[a] += side == 0 ? -1 : 1;
-            nb[a] = nb[a] < 0 ? n[a] - 1 : (nb[a] >= n[a] ? 0 : nb[a]);
+            if (nb[a] < 0 || nb[a] >= n[a]) {
+              if (!periodic[a]) {
+                continue; // an open end: no antidiffusion through it
+              }
+              nb[a] = nb[a] < 0 ? n[a] - 1 : 0;
+            }
             const int NI = nb[0] + g, NJ = nb[1] + g, NK = nb[2] + gz;
             hiBound = math::fmax(hiBound, math::fmax(phi(NI, NJ, NK), phiLow(NI, NJ, NK)));
             loBound = math::fmin(loBound, math::fmin(phi(NI, NJ, NK), phiLow(NI, NJ, NK)));
@@ -258,6 +275,31 @@ void transportVolumeFraction(ExecutionSpace const& space, CutCells<MemorySpace> 
         phi(I, J, K) =
             v > 0.0 ? phiLow(I, J, K) - detail::netOutflow(a0, a1, a2, dims, I, J, K) / v : 0.0;
       });
+}
+
+/// \brief The solids carried through the boundary faces of `side` (2 axis + 0 low / 1 high) by
+/// the last transportVolumeFraction step with work w, in the units of solidsContent (x the cell
+/// volume gives m^3), positive along +axis. Non-zero only on open sides, where the flux is the
+/// upwind (low-order) one.
+template <class ExecutionSpace, class MemorySpace>
+double boundarySolidsFlux(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
+                          FctWork<MemorySpace> const& w, int side) {
+  const Grid grid = cc.grid;
+  const int axis = side / 2;
+  const int g = grid.ghost, gz = grid.ghostZ();
+  int lo[3] = {0, 0, 0};
+  int hi[3] = {grid.nx, grid.ny, grid.nz};
+  lo[axis] = side % 2 == 0 ? 0 : grid.cells(axis);
+  hi[axis] = lo[axis] + 1;
+  const auto low = w.low[axis];
+  double sum = 0.0;
+  Kokkos::parallel_reduce(
+      "hikiln::cfd::boundarySolidsFlux", gridPolicy(space, lo, hi),
+      KOKKOS_LAMBDA(const int i, const int j, const int k, double& s) {
+        s += low(i + g, j + g, k + gz);
+      },
+      sum);
+  return sum;
 }
 
 /// \brief Solids content sum of capacity x phi over the cells (x

@@ -30,12 +30,18 @@
 ///    implicit diffusion with the effective bed diffusivity (CellMultigrid, PCG).
 /// dt is the largest step whose outflow from every cell is at most `cfl` of its fluid volume
 /// (advection), capped by dtMax; the reason is returned with the step.
+///
+/// Open ends (a kiln's inlet and discharge, OpenSides): an Inflow face carries its given
+/// velocity and phi (upwind in step 1); an Outflow face gets the zero-gradient velocity of the
+/// predictor, then the projection's correction against the gas's hydrostatic pressure held on
+/// the face (step 5 solves for p - rho_gas g.x, 0 there). In a closed domain nothing changes.
 
 #include "kernels/cfd/EnergyKernels.hpp"
 #include "kernels/cfd/FieldOps.hpp"
 #include "kernels/cfd/GhostFill.hpp"
 #include "kernels/cfd/GranularRheology.hpp"
 #include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/OpenEndKernels.hpp"
 #include "kernels/cfd/ProjectionKernels.hpp"
 #include "kernels/cfd/ShellGeometry.hpp"
 #include "kernels/cfd/VolumeFractionFct.hpp"
@@ -47,6 +53,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -94,12 +101,33 @@ struct TwoPhaseParameters {
   }
 };
 
+/// \brief Open ends of the domain (a kiln's inlet and discharge faces; only the z sides of a 3D
+/// grid that is not periodic along z), per side (2 axis + 0 low / 1 high):
+/// - Wall (the default): a closed side.
+/// - Inflow: the normal velocity and the solids fraction flowing in are given per boundary face
+///   (TwoPhaseSolver::setInflow; 0 where the shape closes the face); the tangential velocity is
+///   0 (no slip), the pressure has zero normal gradient there.
+/// - Outflow: the pressure on the open boundary faces is that of the gas at rest, rho_gas g.x
+///   (the bed pours out, the freeboard gas stays still), the tangential velocity and phi have
+///   zero normal gradient, the normal velocity comes from the projection.
+/// The shape says which boundary faces are open (CutCellOptions::open; KilnDomain).
+struct OpenSides {
+  BoundaryKind kind[6] = {BoundaryKind::Wall, BoundaryKind::Wall, BoundaryKind::Wall,
+                          BoundaryKind::Wall, BoundaryKind::Wall, BoundaryKind::Wall};
+  /// \brief True when some side has the given kind.
+  bool has(BoundaryKind k) const {
+    return std::find(std::begin(kind), std::end(kind), k) != std::end(kind);
+  }
+};
+
 /// \brief What one step did.
 struct TwoPhaseStepReport {
   double dt = 0.0;
   std::string limitedBy;     ///< "advection (CFL)" or "dt_max"
   double solidsBefore = 0.0; ///< sum of capacity x phi before the step
   double solidsAfter = 0.0;  ///< ... after it
+  double solidsIn = 0.0;     ///< carried in through Inflow sides in the step (solids() units)
+  double solidsOut = 0.0;    ///< carried out through Outflow sides in the step
   SolveStats viscous, pressure, energy;
   double heatBefore = 0.0;    ///< heat content before the step (energy on)
   double heatAfter = 0.0;     ///< ... after it
@@ -114,21 +142,31 @@ public:
   using field_type = Field<memory_space>;
   using velocity_type = VelocityFields<memory_space>;
 
-  /// \brief A solver on grid for the fluid inside shape, everything at rest, phi = 0, p = 0.
+  /// \brief A solver on grid for the fluid inside shape, everything at rest, phi = 0, p = 0,
+  /// closed or with open ends (OpenSides).
   TwoPhaseSolver(ExecutionSpace const& space, Grid const& grid, Shape const& shape,
-                 TwoPhaseParameters const& params, CutCellOptions const& cutOptions = {})
-      : _space(space), _grid(grid), _shape(shape), _params(params) {
+                 TwoPhaseParameters const& params, CutCellOptions const& cutOptions = {},
+                 OpenSides const& openSides = {})
+      : _space(space), _grid(grid), _shape(shape), _params(params), _open(openSides) {
     params.validate();
     for (int a = 0; a < 3; ++a) {
       _periodic[a] = cutOptions.periodic[a] || (a == 2 && !grid.is3D());
     }
+    validateOpenSides();
     CutCellOptions options = cutOptions;
     options.periodic[2] = _periodic[2];
+    for (int side = 0; side < 6; ++side) {
+      options.open[side] = _open.kind[side] != BoundaryKind::Wall;
+    }
+    _cutOptions = options;
     _cut = buildCutCells(space, grid, shape, options);
     for (int side = 0; side < 6; ++side) {
       const bool per = _periodic[side / 2];
-      _pressureBc.kind[side] = per ? BoundaryKind::Periodic : BoundaryKind::Wall;
-      _velocityBc.kind[side] = per ? BoundaryKind::Periodic : BoundaryKind::Wall;
+      const BoundaryKind end = _open.kind[side];
+      _pressureBc.kind[side] =
+          per ? BoundaryKind::Periodic
+              : (end == BoundaryKind::Outflow ? BoundaryKind::Value : BoundaryKind::Wall);
+      _velocityBc.kind[side] = per ? BoundaryKind::Periodic : end;
     }
     const auto cellField = [&](char const* label) {
       return makeField(space, grid, Staggering::Cell, label);
@@ -142,6 +180,7 @@ public:
     _div = cellField("hikiln::cfd::div");
     _pAlpha = cellField("hikiln::cfd::pAlpha");
     if (params.energy) {
+      refuseOpenEnds("the energy equation");
       _T = cellField("hikiln::cfd::T");
       allocateHeatWork();
     }
@@ -160,7 +199,61 @@ public:
       _cells.hi[a] = grid.cells(a);
     }
     _cells.offsets = ghostOffsets(grid);
+    if (_open.has(BoundaryKind::Inflow)) {
+      _inflowW = makeField(space, grid, faceStaggering(2), "hikiln::cfd::inflowW");
+      _inflowPhi = makeField(space, grid, faceStaggering(2), "hikiln::cfd::inflowPhi");
+    }
+    if (_open.has(BoundaryKind::Outflow)) {
+      _gasHead = cellField("hikiln::cfd::gasHead");
+      gasHead(space, grid, params.gasDensity, params.gravity, _gasHead);
+    }
   }
+
+  /// \brief Sets what flows in through the Inflow sides: on each open boundary face, the speed
+  /// into the domain inflow.axialVelocity(x, y) and the solids fraction inflow.inflowPhi(x, y)
+  /// (e.g. KilnInlet), at the centroid of the face's open part. u becomes divergence-free with
+  /// that inflow (see startInflow). Throws std::invalid_argument when an inflow phi leaves
+  /// [0, phiMax].
+  template <class Inflow> void setInflow(Inflow const& inflow) {
+    double lo = 0.0, hi = 0.0;
+    for (int side : {ZLow, ZHigh}) {
+      if (_open.kind[side] == BoundaryKind::Inflow) {
+        double sideLo, sideHi;
+        evaluateInflow(_space, _cut, side, inflow, _inflowW, _inflowPhi, sideLo, sideHi);
+        lo = std::min(lo, sideLo);
+        hi = std::max(hi, sideHi);
+      }
+    }
+    if (!(lo >= 0.0 && hi <= _params.rheology.phiMax)) {
+      throw std::invalid_argument("hikiln::cfd::TwoPhaseSolver::setInflow: the inflow's solids "
+                                  "fraction must be in [0, phi_max = " +
+                                  std::to_string(_params.rheology.phiMax) + "]");
+    }
+    _inflowSet = true;
+    startInflow();
+  }
+
+  /// \brief Replaces the shape (a kiln's dam ring switched on) and measures the cut cells again.
+  /// phi keeps its value where the fluid stays and counts for nothing where the new shape is
+  /// solid; u is made divergence-free with the new apertures (a projection without gravity).
+  /// Returns the solids content the new walls took (solids() units).
+  double changeShape(Shape const& shape) {
+    const double before = solids();
+    _shape = shape;
+    _cut = buildCutCells(_space, _grid, shape, _cutOptions);
+    imposeInflow(_u.comp[2]);
+    makeDivergenceFree();
+    return before - solids();
+  }
+
+  /// \brief Solids carried in through the Inflow sides and out through the Outflow sides since
+  /// the start (solids() units).
+  double solidsInTotal() const { return _solidsIn; }
+  double solidsOutTotal() const { return _solidsOut; }
+
+  /// \brief Volume flux (m^3/s) of the mixture through the open boundary faces of `side`,
+  /// positive out of the domain.
+  double volumeOutflow(int side) { return endVolumeOutflow(_space, _cut, side, _u.comp[2]); }
 
   /// \brief Sets phi = phiMax x the fraction of each fluid cell below the plane y = level (a flat
   /// bed at rest), u = 0 and p to the hydrostatic pressure of that bed.
@@ -181,6 +274,9 @@ public:
       Kokkos::deep_copy(_space, _u.comp[a], 0.0);
     }
     hydrostaticPressure();
+    if (_inflowSet) {
+      startInflow();
+    }
   }
 
   /// \brief Sets phi = phiMax in every fluid cell (a full drum), u = 0, hydrostatic p.
@@ -195,7 +291,7 @@ public:
     }
     addGravity(_space, _cut, _params.gravity, 1.0, _uStar);
     Kokkos::deep_copy(_space, _p, 0.0);
-    project(1.0, _uStar, _p);
+    project(1.0, _uStar, _p, true, false);
   }
 
   /// \brief The largest stable step and what limits it.
@@ -232,8 +328,23 @@ public:
     if (_phiOld.extent(0) > 0) {
       Kokkos::deep_copy(_space, _phiOld, _phi);
     }
+    if (_open.has(BoundaryKind::Inflow) || _open.has(BoundaryKind::Outflow)) {
+      fillOpenEndGhosts();
+    }
     transportVolumeFraction(_space, _cut, _u, settling().v, dt, rh.phiMax, _phi, _fct);
     report.solidsAfter = solidsContent(_space, _cut, _phi);
+    for (int side : {ZLow, ZHigh}) {
+      if (_open.kind[side] == BoundaryKind::Wall) {
+        continue;
+      }
+      // flux along +z: into the domain at the low side, out of it at the high side
+      const double out =
+          (side == ZHigh ? 1.0 : -1.0) * boundarySolidsFlux(_space, _cut, _fct, side);
+      (_open.kind[side] == BoundaryKind::Outflow ? report.solidsOut : report.solidsIn) +=
+          _open.kind[side] == BoundaryKind::Outflow ? out : -out;
+    }
+    _solidsIn += report.solidsIn;
+    _solidsOut += report.solidsOut;
     if (_params.energy) {
       report.energy = energyStep(dt, _T, _params.thermal, &report.heatSubsteps);
       report.heatAfter = heat();
@@ -258,12 +369,20 @@ public:
     MultigridOptions vopt;
     vopt.tolerance = _params.viscousTolerance;
     vopt.maxIterations = _params.maxIterations;
+    if (dims() == 3) {
+      // the open ends' normal velocities are data of the solve: u^n's (inflow given, outflow
+      // from the last projection)
+      copyEndNodes(_u.comp[2], _uStar.comp[2]);
+    }
     ViscousMultigrid<ExecutionSpace> viscous(_space, _grid, _velocityBc, _alpha, _mu, vopt,
                                              wallLawApertures());
     report.viscous = viscous.solvePcg(_uStar, _rhs);
     if (!report.viscous.converged) {
       throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: momentum solve did not converge (" +
                                std::to_string(report.viscous.iterations) + " iterations)");
+    }
+    if (_open.has(BoundaryKind::Outflow)) {
+      extrapolateOutflow(_uStar.comp[2]);
     }
     addGravity(_space, _cut, _params.gravity, dt, _uStar);
     report.pressure = project(dt, _uStar, _p);
@@ -288,6 +407,7 @@ public:
   /// returns its index. Many tracers share one flow computation: `hikiln fit-diffusivity` runs
   /// all its candidate diffusivities in one continuum run. Fill it before stepping.
   int addTemperatureTracer(double alphaEff) {
+    refuseOpenEnds("temperature tracers");
     TemperatureTracer tracer;
     tracer.thermal = _params.thermal;
     tracer.thermal.alphaEff = alphaEff;
@@ -492,8 +612,32 @@ private:
     }
   }
 
-  /// \brief Projects u (in place) with step dt; p becomes the pressure.
-  SolveStats project(double dt, velocity_type const& u, field_type const& p) {
+  /// \brief u at rest but for the given inflow, made divergence-free (a projection without
+  /// gravity, the potential kept apart from p): the volume-fraction transport is bounded only
+  /// with divergence-free fluxes.
+  void startInflow() {
+    imposeInflow(_u.comp[2]);
+    makeDivergenceFree();
+  }
+
+  /// \brief Projects u without gravity, the potential kept apart from p.
+  void makeDivergenceFree() {
+    const field_type potential = makeField(_space, _grid, Staggering::Cell, "hikiln::cfd::phi0");
+    project(1.0, _u, potential, false);
+  }
+
+  /// \brief Projects u (in place) with step dt; p becomes the pressure (withGasHead: the full
+  /// pressure; else the potential of a projection that is 0 on the outflow faces). The Inflow
+  /// faces carry the given inflow (withInflow) or nothing.
+  SolveStats project(double dt, velocity_type const& u, field_type const& p,
+                     bool withGasHead = true, bool withInflow = true) {
+    const bool outflow = _open.has(BoundaryKind::Outflow) && withGasHead;
+    if (outflow) {
+      // solve for p' = p - rho_gas g.x, which is 0 on the outflow faces: the gas head's
+      // gradient (rho_gas g on every face) comes off u first
+      correctVelocity(_space, _cut, _rhoFace, dt, _gasHead, u);
+    }
+    imposeInflow(u.comp[2], withInflow ? 1.0 : 0.0);
     // solid cells: any positive alpha decouples them; scale it like the fluid cells' diagonal
     double hMin = std::min(_grid.hx, _grid.hy);
     const double removedAlpha = 1.0 / (_params.solidDensity * hMin * hMin);
@@ -512,15 +656,91 @@ private:
       throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: pressure solve did not converge (" +
                                std::to_string(stats.iterations) + " iterations)");
     }
+    if (_open.has(BoundaryKind::Outflow)) {
+      fillGhostsScalar(_space, _grid, _pressureBc, p); // the outflow faces read p's ghosts
+    }
     correctVelocity(_space, _cut, _rhoFace, dt, p, u);
+    imposeInflow(u.comp[2], withInflow ? 1.0 : 0.0);
+    if (outflow) {
+      axpbyUnknowns(_space, _cells, 1.0, _gasHead, 1.0, p);
+    }
     return stats;
+  }
+
+  /// \brief Throws unless the open sides are the z sides of a 3D grid not periodic along z,
+  /// and an inflow has an outflow (the mixture is incompressible).
+  void validateOpenSides() const {
+    const std::string who = "hikiln::cfd::TwoPhaseSolver: ";
+    for (int side = 0; side < 6; ++side) {
+      const BoundaryKind k = _open.kind[side];
+      if (k != BoundaryKind::Wall && k != BoundaryKind::Inflow && k != BoundaryKind::Outflow) {
+        throw std::invalid_argument(who + "an open side must be Wall, Inflow or Outflow");
+      }
+      if (k != BoundaryKind::Wall && (side / 2 != 2 || !_grid.is3D() || _periodic[2])) {
+        throw std::invalid_argument(who +
+                                    "only the z ends of a 3D grid not periodic along z "
+                                    "can be open (side " +
+                                    std::to_string(side) + ")");
+      }
+    }
+    if (_open.has(BoundaryKind::Inflow) && !_open.has(BoundaryKind::Outflow)) {
+      throw std::invalid_argument(who + "an inflow needs an outflow side (the mixture is "
+                                        "incompressible)");
+    }
+  }
+
+  void refuseOpenEnds(char const* what) const {
+    if (_open.has(BoundaryKind::Inflow) || _open.has(BoundaryKind::Outflow)) {
+      throw std::invalid_argument(std::string("hikiln::cfd::TwoPhaseSolver: ") + what +
+                                  " with open ends is not supported yet");
+    }
+  }
+
+  /// \brief w on the Inflow sides' boundary faces = scale x the given inflow (setInflow).
+  void imposeInflow(field_type const& w, double scale = 1.0) {
+    for (int side : {ZLow, ZHigh}) {
+      if (_open.kind[side] == BoundaryKind::Inflow) {
+        copyEndFaces(_space, _grid, side, _inflowW, w, scale);
+      }
+    }
+  }
+
+  /// \brief Copies the boundary faces of the open sides from `from` to `to`.
+  void copyEndNodes(field_type const& from, field_type const& to) {
+    for (int side : {ZLow, ZHigh}) {
+      if (_open.kind[side] != BoundaryKind::Wall) {
+        copyEndFaces(_space, _grid, side, from, to);
+      }
+    }
+  }
+
+  /// \brief The Outflow sides' boundary faces take the velocity of the faces inside them (zero
+  /// gradient); the projection then corrects them.
+  void extrapolateOutflow(field_type const& w) {
+    for (int side : {ZLow, ZHigh}) {
+      if (_open.kind[side] == BoundaryKind::Outflow) {
+        extrapolateEndFaces(_space, _grid, side, w);
+      }
+    }
+  }
+
+  /// \brief phi's ghost cells beyond the open ends, read by the FCT fluxes there.
+  void fillOpenEndGhosts() {
+    for (int side : {ZLow, ZHigh}) {
+      if (_open.kind[side] != BoundaryKind::Wall) {
+        fillEndGhosts(_space, _grid, side, _open.kind[side] == BoundaryKind::Inflow, _inflowPhi,
+                      _phi);
+      }
+    }
   }
 
   ExecutionSpace _space;
   Grid _grid;
   Shape _shape;
   TwoPhaseParameters _params;
+  OpenSides _open;
   bool _periodic[3] = {false, false, true};
+  CutCellOptions _cutOptions;
   CutCells<memory_space> _cut;
   ScalarBoundaries _pressureBc;
   VelocityBoundaries _velocityBc;
@@ -535,6 +755,9 @@ private:
     ThermalParameters thermal;
   };
   std::vector<TemperatureTracer> _tracers;
+  field_type _inflowW, _inflowPhi, _gasHead; ///< open ends only
+  bool _inflowSet = false;
+  double _solidsIn = 0.0, _solidsOut = 0.0;
   double _time = 0.0;
 };
 

@@ -5,6 +5,7 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -142,6 +143,21 @@ drumBedInverseDensity(ExecutionSpace const& space, Grid const& g, double ratio, 
     const bool bed = x * x + y * y < radius * radius && y < chord;
     return bed ? 1.0 / ratio : 1.0;
   });
+}
+
+/// \brief Largest |value| of a field of staggering s over its stored interior positions
+/// (boundary nodes included).
+template <class View> double maxAbsInterior(View const& v, Grid const& g, Staggering s) {
+  const auto h = toHost(v);
+  double worst = 0.0;
+  for (int k = 0; k < g.nz + isNodeCentred(s, 2); ++k) {
+    for (int j = 0; j < g.ny + isNodeCentred(s, 1); ++j) {
+      for (int i = 0; i < g.nx + isNodeCentred(s, 0); ++i) {
+        worst = std::max(worst, std::fabs(h(i + g.ghost, j + g.ghost, k + g.ghostZ())));
+      }
+    }
+  }
+  return worst;
 }
 
 } // namespace hikiln::cfd::test

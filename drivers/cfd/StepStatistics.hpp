@@ -1,0 +1,66 @@
+#pragma once
+/// \file StepStatistics.hpp
+/// \brief Bookkeeping of a continuum run's time steps shared by `hikiln continuum` and
+/// `hikiln kiln`: landing on output times, and the counts, extremes and solver iterations of the
+/// steps that go into the log and summary.json.
+
+#include "solvers/cfd/TwoPhaseSolver.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <string>
+
+namespace hikiln::cfd {
+
+/// \brief The step dt from `time`, shortened to land on `target` when it would pass it (a
+/// shorter step is always stable); the reason then says so.
+inline double landOn(double time, double dt, double target, std::string& reason) {
+  if (time + dt > target) {
+    reason += ", shortened to an output time";
+    return target - time;
+  }
+  return dt;
+}
+
+/// \brief Counts and extremes of the steps taken.
+struct StepStatistics {
+  std::int64_t steps = 0;
+  std::int64_t viscousIterations = 0;
+  std::int64_t pressureIterations = 0;
+  double minDt = std::numeric_limits<double>::infinity();
+  double maxDt = 0.0;
+  double maxDivergence = 0.0;
+  std::map<std::string, std::int64_t> limits; ///< steps per limiting reason
+
+  /// \brief Adds one step of length dt taken for `reason` ("advection (CFL), shortened ...").
+  void add(double dt, std::string const& reason, TwoPhaseStepReport const& r) {
+    ++steps;
+    ++limits[reason.substr(0, reason.find(','))];
+    minDt = std::min(minDt, dt);
+    maxDt = std::max(maxDt, dt);
+    maxDivergence = std::max(maxDivergence, r.maxDivergence);
+    viscousIterations += r.viscous.iterations;
+    pressureIterations += r.pressure.iterations;
+  }
+
+  /// \brief Writes steps, dt_min, dt_max, dt_limited_by, max_divergence, the mean iterations,
+  /// seconds_per_step and cell_updates_per_second (loopSeconds of stepping over `cells`).
+  void writeTo(nlohmann::json& summary, double loopSeconds, std::int64_t cells) const {
+    const double n = static_cast<double>(steps);
+    summary["steps"] = steps;
+    summary["dt_min"] = steps > 0 ? minDt : 0.0;
+    summary["dt_max"] = maxDt;
+    summary["dt_limited_by"] = limits;
+    summary["max_divergence"] = maxDivergence;
+    summary["mean_viscous_iterations"] = steps > 0 ? double(viscousIterations) / n : 0.0;
+    summary["mean_pressure_iterations"] = steps > 0 ? double(pressureIterations) / n : 0.0;
+    summary["seconds_per_step"] = steps > 0 ? loopSeconds / n : 0.0;
+    summary["cell_updates_per_second"] = loopSeconds > 0.0 ? double(cells) * n / loopSeconds : 0.0;
+  }
+};
+
+} // namespace hikiln::cfd

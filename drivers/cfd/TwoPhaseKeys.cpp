@@ -1,0 +1,104 @@
+#include "drivers/cfd/TwoPhaseKeys.hpp"
+
+#include "solvers/calibration/RheologyFile.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace hikiln::cfd {
+
+namespace fs = std::filesystem;
+using cases::Bounds;
+
+void addTwoPhaseKeys(cases::CaseSchema& s) {
+  s.real("material.solid_density")
+      .unit("kg/m^3")
+      .positive()
+      .defaultsTo("2700")
+      .doc("Grain material density (bed density = phi_max x this)");
+  s.real("material.phi_max")
+      .unit("fraction")
+      .range(0, 1, Bounds::OpenMin)
+      .defaultsTo("0.6")
+      .doc("Solids volume fraction of the settled bed");
+  s.real("material.settling_velocity")
+      .unit("m/s")
+      .nonNegative()
+      .defaultsTo("0.5")
+      .doc("Grains falling through the gas (drift flux; keeps the bed surface sharp)");
+  s.real("gas.density").unit("kg/m^3").positive().defaultsTo("1.2").doc("Gas density");
+  s.real("gas.viscosity").unit("Pa s").positive().defaultsTo("1.8e-5").doc("Gas viscosity");
+  s.string("rheology.file")
+      .defaultsTo("\"\"")
+      .doc("Rheology file of `hikiln calibrate` (relative to this file); empty: the keys below");
+  s.real("rheology.m0")
+      .unit("1")
+      .nonNegative()
+      .defaultsTo("0.55")
+      .doc("Drucker-Prager friction m at zero strain rate (m = m0 + m1 gamma_dot)");
+  s.real("rheology.m1")
+      .unit("s")
+      .defaultsTo("0.0")
+      .doc("dm / d gamma_dot (m is floored at 0 when negative)");
+  s.real("rheology.mu_wall")
+      .unit("1")
+      .nonNegative()
+      .defaultsTo("0.35")
+      .doc("Bed-shell Coulomb friction coefficient");
+  s.real("rheology.strain_rate_floor")
+      .unit("1/s")
+      .positive()
+      .defaultsTo("1e-3")
+      .doc("Regularisation: eta = m p / max(gamma_dot, floor)");
+  s.real("rheology.viscosity_max")
+      .unit("Pa s")
+      .positive()
+      .defaultsTo("1e5")
+      .doc("Cap of the bed viscosity");
+  s.real("numerics.cfl")
+      .unit("1")
+      .range(0, 1, Bounds::OpenMin)
+      .defaultsTo("0.5")
+      .doc("Largest outflow per step over a cell's capacity");
+  s.real("numerics.dt_max").unit("s").positive().defaultsTo("0.01").doc("Largest time step");
+  s.require("viscosity_max above the gas viscosity", [](const cases::CaseFile& c) {
+    return c.real("rheology.viscosity_max") > c.real("gas.viscosity");
+  });
+}
+
+std::string readTwoPhaseKeys(const cases::CaseFile& c, TwoPhaseParameters& p) {
+  p.solidDensity = c.real("material.solid_density");
+  p.gasDensity = c.real("gas.density");
+  p.settlingVelocity = c.real("material.settling_velocity");
+  p.cfl = c.real("numerics.cfl");
+  p.dtMax = c.real("numerics.dt_max");
+  GranularRheology& r = p.rheology;
+  r.phiMax = c.real("material.phi_max");
+  r.gasViscosity = c.real("gas.viscosity");
+  r.m0 = c.real("rheology.m0");
+  r.m1 = c.real("rheology.m1");
+  r.muWall = c.real("rheology.mu_wall");
+  r.strainRateFloor = c.real("rheology.strain_rate_floor");
+  r.viscosityMax = c.real("rheology.viscosity_max");
+  const std::string file = c.string("rheology.file");
+  if (file.empty()) {
+    return "case file";
+  }
+  fs::path path(file);
+  if (path.is_relative()) {
+    path = fs::path(c.source()).parent_path() / path;
+  }
+  const calibration::RheologyParameters fit = calibration::loadRheologyFile(path.string());
+  if (fit.m0 < 0.0 || fit.muWall < 0.0) {
+    throw std::runtime_error(path.string() + ": m0 and mu_wall must be >= 0 for the continuum");
+  }
+  r.m0 = fit.m0;
+  r.m1 = fit.m1;
+  r.muWall = fit.muWall;
+  if (fit.strainRateFloor > 0.0) {
+    r.strainRateFloor = fit.strainRateFloor;
+  }
+  return path.string();
+}
+
+} // namespace hikiln::cfd

@@ -1,0 +1,218 @@
+#!/usr/bin/python3
+"""Pictures of a `hikiln kiln` run (physics.md 7).
+
+Reads the run directory (fields_NNNN.h5 with 3D cell fields [nz][ny][nx], timeseries.csv,
+case.resolved.yaml) and writes:
+
+- kiln_holdup.png: solids hold-up in the kiln, solids fed and discharged (cumulative) against
+  time, and the mass balance error (in - out - accumulation - dam) against time;
+- kiln_surface_tNNN.png: the bed surface (the iso-surface of solids volume fraction at half
+  the packed value, by marching cubes from scikit-image) coloured by axial velocity, one per
+  snapshot time (time.snapshots of the case; the output nearest to each), and
+  kiln_surfaces.png with all of them on one colour scale;
+- kiln_midplane.png: the vertical axial mid-plane (x = 0) of each snapshot, solids fraction as
+  colour and the in-plane velocity (axial, vertical) as arrows.
+
+Written for Debian's python3 with python3-matplotlib, -numpy, -h5py and -skimage:
+
+    /usr/bin/python3 plot_kiln.py --run RUN --out RUN/plots
+"""
+import argparse
+import csv
+import glob
+import os
+import re
+import sys
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")  # files only, no display needed
+import matplotlib.colors as mcolors  # noqa: E402
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+
+
+def read_series(run):
+    path = os.path.join(run, "timeseries.csv")
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        sys.exit(f"plot_kiln: {path} has no rows")
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+def snapshot_times(run):
+    """time.snapshots of the resolved case (a flow list of numbers), or [] when absent."""
+    path = os.path.join(run, "case.resolved.yaml")
+    if not os.path.exists(path):
+        return []
+    text = open(path).read()
+    match = re.search(r"snapshots:\s*\[([^\]]*)\]", text)
+    if not match:
+        return []
+    return [float(v) for v in match.group(1).split(",") if v.strip()]
+
+
+def read_outputs(run):
+    """(time, path) of every field output, by time."""
+    out = []
+    for path in sorted(glob.glob(os.path.join(run, "fields_*.h5"))):
+        with h5py.File(path, "r") as f:
+            out.append((float(f.attrs["time"]), path))
+    if not out:
+        sys.exit(f"plot_kiln: no fields_*.h5 in {run}")
+    return sorted(out)
+
+
+def load(path):
+    with h5py.File(path, "r") as f:
+        fields = {k: f["fields"][k][()] for k in f["fields"]}
+    return fields
+
+
+def geometry(run):
+    """Cell size and origin from the XDMF file (ORIGIN_DXDYDZ, DXDYDZ, written z y x)."""
+    text = open(os.path.join(run, "fields.xmf")).read()
+    items = re.findall(r'<Geometry GeometryType="ORIGIN_DXDYDZ">\s*<DataItem[^>]*>([^<]*)</DataItem>'
+                       r'\s*<DataItem[^>]*>([^<]*)</DataItem>', text)
+    if not items:
+        sys.exit("plot_kiln: fields.xmf has no ORIGIN_DXDYDZ geometry")
+    origin = [float(v) for v in items[0][0].split()][::-1]
+    spacing = [float(v) for v in items[0][1].split()][::-1]
+    return np.array(origin), np.array(spacing)
+
+
+def surface(fields, level, origin, spacing):
+    """Triangles (N x 3 x 3, x y z in m) of the iso-surface phi = level and the axial velocity
+    at their centroids (nearest cell)."""
+    from skimage.measure import marching_cubes
+
+    phi = fields["volume_fraction"]  # [nz][ny][nx]
+    # pad with empty cells so the surface closes at the ends and the shell
+    padded = np.pad(phi, 1, mode="constant", constant_values=0.0)
+    verts, faces, _, _ = marching_cubes(padded, level=level)
+    verts -= 1.0  # index space of the unpadded cell centres (k, j, i)
+    xyz = np.stack([origin[0] + (verts[:, 2] + 0.5) * spacing[0],
+                    origin[1] + (verts[:, 1] + 0.5) * spacing[1],
+                    origin[2] + (verts[:, 0] + 0.5) * spacing[2]], axis=1)
+    tris = xyz[faces]
+    centre = verts[faces].mean(axis=1)
+    nz, ny, nx = phi.shape
+    k = np.clip(np.rint(centre[:, 0]).astype(int), 0, nz - 1)
+    j = np.clip(np.rint(centre[:, 1]).astype(int), 0, ny - 1)
+    i = np.clip(np.rint(centre[:, 2]).astype(int), 0, nx - 1)
+    return tris, fields["axial_velocity"][k, j, i]
+
+
+def draw_surface(ax, tris, colour, norm, cmap, extent, title):
+    # the kiln axis (z) drawn horizontally: plot (z, x, y)
+    poly = Poly3DCollection(tris[:, :, [2, 0, 1]], linewidths=0.0)
+    poly.set_facecolor(cmap(norm(colour)))
+    ax.add_collection3d(poly)
+    ax.set_xlim(extent[2])
+    ax.set_ylim(extent[0])
+    ax.set_zlim(extent[1])
+    ax.set_box_aspect((extent[2][1] - extent[2][0], extent[0][1] - extent[0][0],
+                       extent[1][1] - extent[1][0]))
+    ax.view_init(elev=25, azim=-60)
+    ax.set_xlabel("z (m)")
+    ax.set_ylabel("x (m)")
+    ax.set_zlabel("y (m)")
+    ax.set_title(title)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--run", required=True, help="hikiln kiln output directory")
+    parser.add_argument("--out", required=True, help="directory for the PNG files")
+    args = parser.parse_args()
+    os.makedirs(args.out, exist_ok=True)
+
+    s = read_series(args.run)
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    top.plot(s["time"], s["holdup_m3"], label="hold-up")
+    top.plot(s["time"], s["solids_in_m3"], label="fed (cumulative)")
+    top.plot(s["time"], s["solids_out_m3"], label="discharged (cumulative)")
+    if np.any(s["dam_displaced_m3"] > 0):
+        top.plot(s["time"], s["dam_displaced_m3"], label="taken by the dam ring")
+    top.set_ylabel("solids volume (m$^3$)")
+    top.legend()
+    top.set_title("Kiln solids hold-up and mass balance")
+    bottom.semilogy(s["time"], np.maximum(np.abs(s["balance_error_m3"]), 1e-30))
+    bottom.set_ylabel("|in - out - accumulation - dam| (m$^3$)")
+    bottom.set_xlabel("time (s)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(args.out, "kiln_holdup.png"), dpi=120)
+    plt.close(fig)
+
+    outputs = read_outputs(args.run)
+    wanted = snapshot_times(args.run) or [t for t, _ in outputs[:: max(1, len(outputs) // 6)]]
+    chosen = []
+    for t in wanted:
+        time, path = min(outputs, key=lambda o: abs(o[0] - t))
+        if (time, path) not in chosen:
+            chosen.append((time, path))
+    origin, spacing = geometry(args.run)
+    first = load(outputs[0][1])
+    level = 0.5 * float(np.max(first["volume_fraction"]))
+    nz, ny, nx = first["volume_fraction"].shape
+    extent = [(origin[a], origin[a] + n * spacing[a]) for a, n in enumerate((nx, ny, nz))]
+
+    surfaces = []
+    for time, path in chosen:
+        fields = load(path)
+        if np.max(fields["volume_fraction"]) < level:
+            continue
+        tris, axial = surface(fields, level, origin, spacing)
+        surfaces.append((time, fields, tris, axial))
+    if not surfaces:
+        sys.exit("plot_kiln: no output holds a bed")
+    vmax = max(np.max(np.abs(a)) for _, _, _, a in surfaces) or 1.0
+    norm = mcolors.Normalize(-vmax, vmax)
+    cmap = plt.get_cmap("coolwarm")
+    cols = min(3, len(surfaces))
+    rows = (len(surfaces) + cols - 1) // cols
+    grid = plt.figure(figsize=(6 * cols, 4.5 * rows))
+    for n, (time, _, tris, axial) in enumerate(surfaces):
+        title = f"bed surface at t = {time:.1f} s"
+        one = plt.figure(figsize=(9, 5))
+        ax = one.add_subplot(projection="3d")
+        draw_surface(ax, tris, axial, norm, cmap, extent, title)
+        one.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax, shrink=0.6,
+                     label="axial velocity (m/s)")
+        one.savefig(os.path.join(args.out, f"kiln_surface_t{time:05.1f}.png"), dpi=120)
+        plt.close(one)
+        draw_surface(grid.add_subplot(rows, cols, n + 1, projection="3d"), tris, axial, norm, cmap,
+                     extent, title)
+    grid.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=grid.axes, shrink=0.5,
+                  label="axial velocity (m/s)")
+    grid.savefig(os.path.join(args.out, "kiln_surfaces.png"), dpi=110)
+    plt.close(grid)
+
+    fig, axes = plt.subplots(len(surfaces), 1, figsize=(10, 2.2 * len(surfaces)), squeeze=False)
+    i0 = nx // 2
+    z = origin[2] + (np.arange(nz) + 0.5) * spacing[2]
+    y = origin[1] + (np.arange(ny) + 0.5) * spacing[1]
+    for ax, (time, fields, _, _) in zip(axes[:, 0], surfaces):
+        phi = fields["volume_fraction"][:, :, i0].T  # [y][z]
+        image = ax.pcolormesh(z, y, phi, shading="nearest", cmap="YlOrBr",
+                              vmin=0.0, vmax=2.0 * level)
+        vel = fields["velocity"][:, :, i0, :]  # [z][y][3]
+        step = max(1, nz // 24)
+        ax.quiver(z[::step], y[::step], vel[::step, ::step, 2].T, vel[::step, ::step, 1].T,
+                  scale_units="xy", angles="xy", width=0.002)
+        ax.set_aspect("equal")
+        ax.set_ylabel("y (m)")
+        ax.set_title(f"axial mid-plane x = 0, t = {time:.1f} s", fontsize=9)
+        fig.colorbar(image, ax=ax, label="solids fraction")
+    axes[-1, 0].set_xlabel("z (m), inlet at 0")
+    fig.tight_layout()
+    fig.savefig(os.path.join(args.out, "kiln_midplane.png"), dpi=110)
+    plt.close(fig)
+    print(f"plot_kiln: {len(surfaces)} snapshots rendered in {args.out}")
+
+
+if __name__ == "__main__":
+    main()

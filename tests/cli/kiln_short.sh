@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# `hikiln kiln` end to end on a coarse copy of the shipped 15 m kiln (12 x 12 x 6 cells, 0.6 s,
+# the dam ring put in at 0.3 s):
+# (1) summary.json: the solids balance (in - out - accumulation - dam) closes to 1e-8 of the
+#     throughput, solids came in and went out, the dam took some, phi stayed in [0, phi_max];
+# (2) timeseries.csv has the initial row and one per output, its hold-up matches the balance;
+# (3) the 3D fields are in the HDF5 outputs and fields.xmf, with the shape [nz][ny][nx];
+# (4) bad input: overlapping inlet patches are refused naming the rule.
+# Usage: kiln_short.sh HIKILN CASE WORKDIR
+set -euo pipefail
+hikiln=$1 case=$2 work=$3
+rm -rf "$work" && mkdir -p "$work"
+"$hikiln" -q --threads 1 kiln "$case" -o "$work/run" --set grid.cells_across=12 \
+  --set grid.cells_along=6 --set time.duration=0.6 --set time.output_interval=0.2 \
+  --set dam.on_at=0.3 --set "time.snapshots=[0.1]"
+/usr/bin/python3 - "$work/run" <<'PY'
+import csv, json, sys, h5py
+run = sys.argv[1]
+s = json.load(open(f"{run}/summary.json"))
+def check(ok, what):
+    if not ok:
+        sys.exit(f"kiln_short: {what} (summary: {json.dumps(s, indent=1)})")
+check(s["balance_error_of_throughput"] < 1e-8, "solids balance does not close to 1e-8")
+check(s["balance_error_worst_step_of_throughput"] < 1e-8, "a step's balance is off")
+check(s["solids_in_m3"] > 0 and s["solids_out_m3"] > 0, "no solids came in or went out")
+check(s["dam_displaced_m3"] > 0, "the dam ring took no solids")
+check(s["phi_min"] >= -1e-12 and s["phi_max"] <= 0.57 + 1e-12, "phi left [0, phi_max]")
+rows = list(csv.DictReader(open(f"{run}/timeseries.csv")))
+times = [float(r["time"]) for r in rows]
+check(len(rows) == 5 and abs(times[-1] - 0.6) < 1e-9, f"timeseries times {times}")
+first, last = rows[0], rows[-1]
+change = float(last["holdup_m3"]) - float(first["holdup_m3"])
+budget = (float(last["solids_in_m3"]) - float(last["solids_out_m3"])
+          - float(last["dam_displaced_m3"]))
+# the CSV holds about 10 significant digits: compare to that of the hold-up
+check(abs(change - budget) <= 1e-8 * float(first["holdup_m3"]),
+      f"hold-up change {change} vs in - out - dam {budget}")
+with h5py.File(f"{run}/fields_0004.h5", "r") as f:
+    phi = f["fields/volume_fraction"][()]
+    vel = f["fields/velocity"][()]
+    check(phi.shape == (6, 12, 12) and vel.shape == (6, 12, 12, 3), f"shapes {phi.shape} {vel.shape}")
+xmf = open(f"{run}/fields.xmf").read()
+check(xmf.count('GridType="Uniform"') == 5 and "axial_velocity" in xmf,
+      "fields.xmf lacks the outputs")
+print("kiln_short: balance", s["balance_error_of_throughput"], "of the throughput; in",
+      s["solids_in_m3"], "out", s["solids_out_m3"], "dam", s["dam_displaced_m3"], "m3")
+PY
+if "$hikiln" -q kiln "$case" -o "$work/bad" --set feed.area_fraction=0.7 2> "$work/bad.err"; then
+  echo "kiln_short: overlapping patches were accepted"; exit 1
+fi
+grep -q "feed and air patches not overlapping" "$work/bad.err" || { cat "$work/bad.err"; exit 1; }
+echo "kiln_short: passed"
