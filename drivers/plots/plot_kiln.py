@@ -140,7 +140,8 @@ def main():
     top.set_ylabel("solids volume (m$^3$)")
     top.legend()
     top.set_title("Kiln solids hold-up and mass balance")
-    bottom.semilogy(s["time"], np.maximum(np.abs(s["balance_error_m3"]), 1e-30))
+    later = s["time"] > 0  # the balance is exactly 0 before the first step
+    bottom.semilogy(s["time"][later], np.maximum(np.abs(s["balance_error_m3"][later]), 1e-300))
     bottom.set_ylabel("|in - out - accumulation - dam| (m$^3$)")
     bottom.set_xlabel("time (s)")
     fig.tight_layout()
@@ -191,7 +192,10 @@ def main():
     grid.savefig(os.path.join(args.out, "kiln_surfaces.png"), dpi=110)
     plt.close(grid)
 
-    fig, axes = plt.subplots(len(surfaces), 1, figsize=(10, 2.2 * len(surfaces)), squeeze=False)
+    # equal axes: size the figure to the slice's length over its height
+    ratio = (extent[2][1] - extent[2][0]) / (extent[1][1] - extent[1][0])
+    fig, axes = plt.subplots(len(surfaces), 1, figsize=(1.8 + 1.5 * ratio, 1.9 * len(surfaces)),
+                             squeeze=False, layout="constrained")
     i0 = nx // 2
     z = origin[2] + (np.arange(nz) + 0.5) * spacing[2]
     y = origin[1] + (np.arange(ny) + 0.5) * spacing[1]
@@ -208,7 +212,6 @@ def main():
         ax.set_title(f"axial mid-plane x = 0, t = {time:.1f} s", fontsize=9)
         fig.colorbar(image, ax=ax, label="solids fraction")
     axes[-1, 0].set_xlabel("z (m), inlet at 0")
-    fig.tight_layout()
     fig.savefig(os.path.join(args.out, "kiln_midplane.png"), dpi=110)
     plt.close(fig)
     print(f"plot_kiln: {len(surfaces)} snapshots rendered in {args.out}")
