@@ -4,7 +4,9 @@
 /// and MG-preconditioned CG solves, the viscous (MAC momentum) V-cycle, the assembled
 /// Kokkos Kernels baseline (CrsMatrix SpMV and Jacobi-CG) on the same problems, and a full
 /// two-phase time step in a rotating drum (cfd_drum_step: D = 2 m, 3 rpm, 20 % fill, Drucker-Prager
-/// bed, dt = 5 ms; 2D sizes up to 256^2; items = cell updates).
+/// bed, dt = 5 ms; 2D sizes up to 256^2; items = cell updates), and a full step of the 3D kiln
+/// with its inlet patches and open discharge (cfd_kiln_step: D = 5 m, cubic cells, 24 % bed,
+/// dt = 5 ms; 32^3 and 64^3).
 ///
 /// Problems: -div(beta grad p) = f on the unit square/cube, walls (Neumann) on every side,
 /// beta from a smooth variable density (harmonic face means), random f. Sizes 64^2 .. 1024^2
@@ -26,6 +28,7 @@
 #include "kernels/cfd/CellOperator.hpp"
 #include "kernels/cfd/FieldOps.hpp"
 #include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/KilnGeometry.hpp"
 #include "kernels/cfd/ViscousOperator.hpp"
 #include "solvers/cfd/CellMultigrid.hpp"
 #include "solvers/cfd/CrsBaseline.hpp"
@@ -319,6 +322,38 @@ void benchmarkDrumStep(Backend<ExecutionSpace>, benchmark::State& state) {
   finish(state, shape, static_cast<double>(shape.cells()));
 }
 
+/// A 3D kiln step (physics.md 7 set-up, scaled to the grid): D = 5 m, cubic cells, 3 rpm, 24 %
+/// bed, feed (4.6 %, 0.05 m/s) and air (35 %, 2 m/s) inlet patches, open discharge.
+template <class ExecutionSpace>
+void benchmarkKilnStep(Backend<ExecutionSpace>, benchmark::State& state) {
+  const ExecutionSpace space{};
+  const Shape shape = allShapes()[state.range(0)];
+  const Grid section = cfd::drumGrid(shape.nx, 5.0);
+  const Grid g =
+      cfd::makeGrid(shape.nx, shape.ny, shape.nz, shape.nx * section.hx, shape.ny * section.hy,
+                    shape.nz * section.hx, section.x0, section.y0, 0.0);
+  cfd::KilnDomain kiln;
+  kiln.shell.radius = 2.5;
+  kiln.shell.omega = 3.0 * 2.0 * constants::pi / 60.0;
+  kiln.shell.zOutlet = shape.nz * section.hx;
+  cfd::TwoPhaseParameters params;
+  params.rheology.m0 = 0.2238;
+  params.rheology.m1 = 0.0827;
+  params.rheology.muWall = 0.181;
+  kiln.inlet = cfd::makeKilnInlet(kiln.shell, 0.046, 0.35, 0.05, 2.0, params.rheology.phiMax,
+                                  "cfd_kiln_step");
+  cfd::CutCellOptions cut;
+  cut.periodic[2] = false;
+  cfd::OpenSides ends;
+  ends.kind[cfd::ZLow] = cfd::BoundaryKind::Inflow;
+  ends.kind[cfd::ZHigh] = cfd::BoundaryKind::Outflow;
+  cfd::TwoPhaseSolver<ExecutionSpace, cfd::KilnDomain> solver(space, g, kiln, params, cut, ends);
+  solver.setFlatBed(-0.4 * kiln.shell.radius); // about 24 % of the cross-section
+  solver.setInflow(kiln.inlet);
+  timeIterations(state, space, [&] { solver.step(0.005); });
+  finish(state, shape, static_cast<double>(shape.cells()));
+}
+
 void registerCfd() {
   const auto all = shapeArgs(std::int64_t{1} << 40, std::int64_t{1} << 40);
   const auto cgSizes = shapeArgs(512 * 512, 64 * 64 * 64);
@@ -347,6 +382,9 @@ void registerCfd() {
   registerPerBackend(
       "cfd_drum_step", shapeArgs(256 * 256, 0),
       [](auto backend, benchmark::State& state) { benchmarkDrumStep(backend, state); });
+  registerPerBackend(
+      "cfd_kiln_step", shapeArgs(0, 64 * 64 * 64),
+      [](auto backend, benchmark::State& state) { benchmarkKilnStep(backend, state); });
 }
 
 HIKILN_PERF_REGISTER(registerCfd);
