@@ -2,6 +2,7 @@
 
 #include "drivers/app/Commands.hpp"
 #include "drivers/case/CaseFile.hpp"
+#include "drivers/cfd/CellFieldOutput.hpp"
 #include "drivers/cfd/ContinuumCase.hpp"
 #include "drivers/cfd/StepStatistics.hpp"
 #include "drivers/dem/TimeSeries.hpp"
@@ -35,88 +36,20 @@ double secondsSince(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-/// Host copies of the cell fields of one output, [ny][nx] with x fastest.
-struct HostFields {
-  std::map<std::string, std::vector<double>> scalars;
-  std::vector<double> velocity; ///< [ny][nx][2], cell-centred (mean of the two faces)
-};
-
-HostFields gatherFields(Solver const& solver) {
+/// The cell fields of one output, with the shear stress invariant q = mu gamma_dot (physics.md
+/// 3) for the DEM comparison.
+CellFieldOutput gatherFields(Solver const& solver) {
   const Grid g = solver.grid();
-  const int o = g.ghost;
-  HostFields out;
-  const auto copy = [&](std::string const& name, Field<Space::memory_space> const& f) {
-    if (f.extent(0) == 0) {
-      return;
-    }
-    const auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, f);
-    std::vector<double>& v = out.scalars[name];
-    v.resize(static_cast<std::size_t>(g.nx) * g.ny);
-    for (int j = 0; j < g.ny; ++j) {
-      for (int i = 0; i < g.nx; ++i) {
-        v[static_cast<std::size_t>(j) * g.nx + i] = h(i + o, j + o, 0);
-      }
-    }
-  };
-  copy("volume_fraction", solver.volumeFraction());
-  copy("pressure", solver.pressure());
-  copy("bed_pressure", solver.bedPressureField());
-  copy("viscosity", solver.viscosity());
-  copy("strain_rate", solver.strainRate());
-  copy("density", solver.density());
-  copy("capacity", solver.cutCells().capacity);
-  copy("temperature", solver.temperature());
-  // shear stress invariant q = mu gamma_dot (physics.md 3), for the DEM comparison
+  CellFieldOutput out;
+  out.addSolverFields(solver);
+  out.add("density", solver.density(), g);
+  out.add("temperature", solver.temperature(), g);
   std::vector<double>& q = out.scalars["shear_stress"];
   q.resize(out.scalars["viscosity"].size());
   for (std::size_t c = 0; c < q.size(); ++c) {
     q[c] = out.scalars["viscosity"][c] * out.scalars["strain_rate"][c];
   }
-  const auto u =
-      Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, solver.velocity().comp[0]);
-  const auto v =
-      Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, solver.velocity().comp[1]);
-  out.velocity.resize(static_cast<std::size_t>(g.nx) * g.ny * 2);
-  for (int j = 0; j < g.ny; ++j) {
-    for (int i = 0; i < g.nx; ++i) {
-      const std::size_t c = static_cast<std::size_t>(j) * g.nx + i;
-      out.velocity[2 * c] = 0.5 * (u(i + o, j + o, 0) + u(i + 1 + o, j + o, 0));
-      out.velocity[2 * c + 1] = 0.5 * (v(i + o, j + o, 0) + v(i + o, j + 1 + o, 0));
-    }
-  }
   return out;
-}
-
-void writeOutput(fs::path const& out, int index, Solver const& solver, HostFields const& f,
-                 io::RunInfo const& info, std::vector<io::XdmfGridStep>& steps) {
-  const Grid g = solver.grid();
-  const std::string name = fmt::format("fields_{:04d}.h5", index);
-  io::H5File file = io::H5File::create((out / name).string());
-  io::writeStandardAttributes(file, info);
-  file.setAttribute("/", "time", solver.time());
-  const std::vector<hsize_t> shape = {static_cast<hsize_t>(g.ny), static_cast<hsize_t>(g.nx)};
-  const std::map<std::string, std::string> units = {
-      {"volume_fraction", "1"}, {"pressure", "Pa"},     {"bed_pressure", "Pa"},
-      {"viscosity", "Pa s"},    {"strain_rate", "1/s"}, {"density", "kg/m^3"},
-      {"capacity", "1"},        {"temperature", "K"},   {"shear_stress", "Pa"}};
-  io::XdmfGridStep step;
-  step.time = solver.time();
-  step.h5File = (out / name).string();
-  step.group = "/fields";
-  step.dim = 2;
-  step.cells = {g.nx, g.ny, 1};
-  step.origin = {g.x0, g.y0, 0.0};
-  step.spacing = {g.hx, g.hy, g.hz};
-  for (auto const& [key, values] : f.scalars) {
-    file.writeDataset("/fields/" + key, values, shape, units.at(key));
-    step.attributes.push_back({key, key});
-  }
-  file.writeDataset("/fields/velocity", f.velocity,
-                    {static_cast<hsize_t>(g.ny), static_cast<hsize_t>(g.nx), 2}, "m/s");
-  step.attributes.push_back({"velocity", "velocity", 2});
-  file.commit();
-  steps.push_back(step);
-  io::writeXdmfGrids((out / "fields.xmf").string(), steps);
 }
 
 } // namespace
@@ -162,8 +95,8 @@ int runContinuum(ContinuumRunOptions const& o) {
                          {"time", "dt", "wall_slip", "solids_change", "max_speed"});
   int outputIndex = 0;
   {
-    const HostFields f = gatherFields(solver);
-    writeOutput(out, outputIndex++, solver, f, info, outputs);
+    const CellFieldOutput f = gatherFields(solver);
+    writeCellFieldOutput(out, outputIndex++, solver.time(), grid, f, info, outputs);
   }
   const auto loopStart = Clock::now();
   double nextOutput = s.outputInterval;
@@ -181,7 +114,7 @@ int runContinuum(ContinuumRunOptions const& o) {
                   dt, reason, r.viscous.iterations, r.pressure.iterations);
     if (solver.time() >= nextOutput * (1.0 - 1e-12)) {
       nextOutput += s.outputInterval;
-      const HostFields f = gatherFields(solver);
+      const CellFieldOutput f = gatherFields(solver);
       const double slip = solver.wallSlip();
       if (std::isfinite(slip) && solver.time() > s.slipAfter) {
         slipSum += slip;
@@ -193,7 +126,7 @@ int runContinuum(ContinuumRunOptions const& o) {
       }
       series.add({solver.time(), dt, 100.0 * slip, (solver.solids() - solids0) / solids0, speed});
       series.flush();
-      writeOutput(out, outputIndex++, solver, f, info, outputs);
+      writeCellFieldOutput(out, outputIndex++, solver.time(), grid, f, info, outputs);
       solver.phiRange(phiLo, phiHi);
       spdlog::info("t = {:.2f} s: step {} (dt {:.3g} s, {}), wall slip {:.1f} %, max speed "
                    "{:.3f} m/s, phi in [{:.3g}, {:.4g}], solids change {:.2e}",

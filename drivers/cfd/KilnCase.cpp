@@ -149,7 +149,6 @@ KilnDomain kilnDomain(KilnSettings const& s, bool withDam) {
   d.shell.validate("kiln");
   d.inlet = makeKilnInlet(d.shell, s.feedFraction, s.airFraction, s.feedVelocity, s.airVelocity,
                           s.feedPacking * s.params.rheology.phiMax, "kiln");
-  d.openOutlet = true;
   return d;
 }
 

@@ -2,6 +2,7 @@
 
 #include "drivers/app/Commands.hpp"
 #include "drivers/case/CaseFile.hpp"
+#include "drivers/cfd/CellFieldOutput.hpp"
 #include "drivers/cfd/ContinuumCase.hpp"
 #include "drivers/cfd/KilnCase.hpp"
 #include "drivers/cfd/StepStatistics.hpp"
@@ -52,97 +53,27 @@ double peakResidentBytes() {
   return 0.0;
 }
 
-/// Host copies of the 3D cell fields of one output, [nz][ny][nx] with x fastest.
-struct HostFields {
-  std::map<std::string, std::vector<double>> scalars;
-  std::vector<double> velocity; ///< [nz][ny][nx][3], cell-centred (mean of the two faces)
-  double maxSpeed = 0.0;
-};
-
-HostFields gatherFields(Solver const& solver) {
-  const Grid g = solver.grid();
-  const int o = g.ghost, oz = g.ghostZ();
-  const std::size_t cells = static_cast<std::size_t>(g.nx) * g.ny * g.nz;
-  const auto at = [&](int i, int j, int k) {
-    return (static_cast<std::size_t>(k) * g.ny + j) * g.nx + i;
-  };
-  HostFields out;
-  const auto copy = [&](std::string const& name, Field<Space::memory_space> const& f) {
-    const auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, f);
-    std::vector<double>& v = out.scalars[name];
-    v.resize(cells);
-    for (int k = 0; k < g.nz; ++k) {
-      for (int j = 0; j < g.ny; ++j) {
-        for (int i = 0; i < g.nx; ++i) {
-          v[at(i, j, k)] = h(i + o, j + o, k + oz);
-        }
-      }
-    }
-  };
-  copy("volume_fraction", solver.volumeFraction());
-  copy("pressure", solver.pressure());
-  copy("bed_pressure", solver.bedPressureField());
-  copy("viscosity", solver.viscosity());
-  copy("strain_rate", solver.strainRate());
-  copy("capacity", solver.cutCells().capacity);
-  out.velocity.resize(3 * cells);
+/// The cell fields of one output, with the axial velocity (w at the cell centres) for the
+/// rendered bed surface.
+CellFieldOutput gatherFields(Solver const& solver) {
+  CellFieldOutput out;
+  out.addSolverFields(solver);
   std::vector<double>& axial = out.scalars["axial_velocity"];
-  axial.resize(cells);
-  for (int c = 0; c < 3; ++c) {
-    const auto u =
-        Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, solver.velocity().comp[c]);
-    for (int k = 0; k < g.nz; ++k) {
-      for (int j = 0; j < g.ny; ++j) {
-        for (int i = 0; i < g.nx; ++i) {
-          const int up[3] = {i + o + (c == 0), j + o + (c == 1), k + oz + (c == 2)};
-          const double mean = 0.5 * (u(i + o, j + o, k + oz) + u(up[0], up[1], up[2]));
-          out.velocity[3 * at(i, j, k) + c] = mean;
-          if (c == 2) {
-            axial[at(i, j, k)] = mean;
-          }
-        }
-      }
-    }
-  }
-  for (std::size_t n = 0; n < cells; ++n) {
-    const double* v = &out.velocity[3 * n];
-    out.maxSpeed = std::max(out.maxSpeed, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+  axial.resize(out.velocity.size() / 3);
+  for (std::size_t n = 0; n < axial.size(); ++n) {
+    axial[n] = out.velocity[3 * n + 2];
   }
   return out;
 }
 
-void writeOutput(fs::path const& out, int index, Solver const& solver, HostFields const& f,
-                 io::RunInfo const& info, std::vector<io::XdmfGridStep>& steps) {
-  const Grid g = solver.grid();
-  const std::string name = fmt::format("fields_{:04d}.h5", index);
-  io::H5File file = io::H5File::create((out / name).string());
-  io::writeStandardAttributes(file, info);
-  file.setAttribute("/", "time", solver.time());
-  const std::vector<hsize_t> shape = {static_cast<hsize_t>(g.nz), static_cast<hsize_t>(g.ny),
-                                      static_cast<hsize_t>(g.nx)};
-  const std::map<std::string, std::string> units = {
-      {"volume_fraction", "1"}, {"pressure", "Pa"}, {"bed_pressure", "Pa"},   {"viscosity", "Pa s"},
-      {"strain_rate", "1/s"},   {"capacity", "1"},  {"axial_velocity", "m/s"}};
-  io::XdmfGridStep step;
-  step.time = solver.time();
-  step.h5File = (out / name).string();
-  step.group = "/fields";
-  step.dim = 3;
-  step.cells = {g.nx, g.ny, g.nz};
-  step.origin = {g.x0, g.y0, g.z0};
-  step.spacing = {g.hx, g.hy, g.hz};
-  for (auto const& [key, values] : f.scalars) {
-    file.writeDataset("/fields/" + key, values, shape, units.at(key));
-    step.attributes.push_back({key, key});
+/// Largest speed over the cells of an output.
+double maxSpeed(CellFieldOutput const& f) {
+  double speed = 0.0;
+  for (std::size_t n = 0; n + 2 < f.velocity.size(); n += 3) {
+    const double* v = &f.velocity[n];
+    speed = std::max(speed, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
   }
-  file.writeDataset(
-      "/fields/velocity", f.velocity,
-      {static_cast<hsize_t>(g.nz), static_cast<hsize_t>(g.ny), static_cast<hsize_t>(g.nx), 3},
-      "m/s");
-  step.attributes.push_back({"velocity", "velocity", 3});
-  file.commit();
-  steps.push_back(step);
-  io::writeXdmfGrids((out / "fields.xmf").string(), steps);
+  return speed;
 }
 
 /// The output times: every interval, and the snapshot times, up to the duration, sorted.
@@ -210,13 +141,14 @@ int runKiln(KilnRunOptions const& o) {
   };
   int outputIndex = 0;
   const auto record = [&](double dt, double outflowRate) {
-    const HostFields f = gatherFields(solver);
+    const CellFieldOutput f = gatherFields(solver);
+    const double speed = maxSpeed(f);
     series.add({solver.time(), dt, solver.solids() * cellVolume,
                 solver.solidsInTotal() * cellVolume, solver.solidsOutTotal() * cellVolume,
-                displaced * cellVolume, balanceError(), outflowRate, f.maxSpeed});
+                displaced * cellVolume, balanceError(), outflowRate, speed});
     series.flush();
-    writeOutput(out, outputIndex++, solver, f, info, outputs);
-    return f.maxSpeed;
+    writeCellFieldOutput(out, outputIndex++, solver.time(), grid, f, info, outputs);
+    return speed;
   };
   record(0.0, 0.0);
   const std::vector<double> times = outputTimes(s);

@@ -11,7 +11,9 @@ case.resolved.yaml) and writes:
   snapshot time (time.snapshots of the case; the output nearest to each), and
   kiln_surfaces.png with all of them on one colour scale;
 - kiln_midplane.png: the vertical axial mid-plane (x = 0) of each snapshot, solids fraction as
-  colour and the in-plane velocity (axial, vertical) as arrows.
+  colour and the in-plane velocity (axial, vertical) as arrows;
+- kiln_bed_depth.csv / .png: the axial bed-depth profile of each snapshot, the depth of a flat
+  bed holding each cross-section's solids (phi_max: the largest phi at the start).
 
 Written for Debian's python3 with python3-matplotlib, -numpy, -h5py and -skimage:
 
@@ -72,16 +74,41 @@ def load(path):
     return fields
 
 
-def geometry(run):
-    """Cell size and origin from the XDMF file (ORIGIN_DXDYDZ, DXDYDZ, written z y x)."""
-    text = open(os.path.join(run, "fields.xmf")).read()
-    items = re.findall(r'<Geometry GeometryType="ORIGIN_DXDYDZ">\s*<DataItem[^>]*>([^<]*)</DataItem>'
-                       r'\s*<DataItem[^>]*>([^<]*)</DataItem>', text)
-    if not items:
-        sys.exit("plot_kiln: fields.xmf has no ORIGIN_DXDYDZ geometry")
-    origin = [float(v) for v in items[0][0].split()][::-1]
-    spacing = [float(v) for v in items[0][1].split()][::-1]
+def geometry(path):
+    """Grid origin and cell size (x, y, z) from a field output's root attributes."""
+    with h5py.File(path, "r") as f:
+        origin = [float(f.attrs[f"origin_{a}"]) for a in "xyz"]
+        spacing = [float(f.attrs[f"spacing_{a}"]) for a in "xyz"]
     return np.array(origin), np.array(spacing)
+
+
+def kiln_radius(run):
+    """kiln.diameter / 2 from the resolved case."""
+    text = open(os.path.join(run, "case.resolved.yaml")).read()
+    match = re.search(r"diameter:\s*([0-9.eE+-]+)", text)
+    if not match:
+        sys.exit("plot_kiln: no kiln.diameter in case.resolved.yaml")
+    return 0.5 * float(match.group(1))
+
+
+def segment_depth(area, radius):
+    """Depth of the circular segment of the given area (bisection)."""
+    lo, hi = 0.0, 2.0 * radius
+    for _ in range(100):
+        h = 0.5 * (lo + hi)
+        theta = 2.0 * np.arccos(1.0 - h / radius)
+        if radius * radius * (theta - np.sin(theta)) / 2.0 < area:
+            lo = h
+        else:
+            hi = h
+    return 0.5 * (lo + hi)
+
+
+def bed_depth(fields, spacing, phi_max, radius):
+    """Per cross-section (along z): the depth of a flat bed holding its solids."""
+    solids = (fields["volume_fraction"] * fields["capacity"]).sum(axis=(1, 2))
+    area = solids * spacing[0] * spacing[1] / phi_max
+    return np.array([segment_depth(a, radius) for a in area])
 
 
 def surface(fields, level, origin, spacing):
@@ -155,9 +182,10 @@ def main():
         time, path = min(outputs, key=lambda o: abs(o[0] - t))
         if (time, path) not in chosen:
             chosen.append((time, path))
-    origin, spacing = geometry(args.run)
+    origin, spacing = geometry(outputs[0][1])
     first = load(outputs[0][1])
-    level = 0.5 * float(np.max(first["volume_fraction"]))
+    phi_max = float(np.max(first["volume_fraction"]))  # the packed bed at rest
+    level = 0.5 * phi_max
     nz, ny, nx = first["volume_fraction"].shape
     extent = [(origin[a], origin[a] + n * spacing[a]) for a, n in enumerate((nx, ny, nz))]
 
@@ -194,10 +222,28 @@ def main():
 
     # equal axes: size the figure to the slice's length over its height
     ratio = (extent[2][1] - extent[2][0]) / (extent[1][1] - extent[1][0])
+    radius = kiln_radius(args.run)
+    z = origin[2] + (np.arange(nz) + 0.5) * spacing[2]
+    depths = [bed_depth(fields, spacing, phi_max, radius) for _, fields, _, _ in surfaces]
+    with open(os.path.join(args.out, "kiln_bed_depth.csv"), "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["z_m"] + [f"depth_m_t{time:g}" for time, _, _, _ in surfaces])
+        for k in range(nz):
+            writer.writerow([f"{z[k]:.6g}"] + [f"{d[k]:.6g}" for d in depths])
+    fig, ax = plt.subplots(figsize=(8, 4))
+    for (time, _, _, _), d in zip(surfaces, depths):
+        ax.plot(z, d, label=f"t = {time:g} s")
+    ax.set_xlabel("z (m), inlet at 0")
+    ax.set_ylabel("bed depth (m)")
+    ax.set_title("Axial bed-depth profile (flat bed of the same solids per cross-section)")
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(args.out, "kiln_bed_depth.png"), dpi=120)
+    plt.close(fig)
+
     fig, axes = plt.subplots(len(surfaces), 1, figsize=(1.8 + 1.5 * ratio, 1.9 * len(surfaces)),
                              squeeze=False, layout="constrained")
     i0 = nx // 2
-    z = origin[2] + (np.arange(nz) + 0.5) * spacing[2]
     y = origin[1] + (np.arange(ny) + 0.5) * spacing[1]
     for ax, (time, fields, _, _) in zip(axes[:, 0], surfaces):
         phi = fields["volume_fraction"][:, :, i0].T  # [y][z]

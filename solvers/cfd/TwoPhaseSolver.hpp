@@ -337,11 +337,14 @@ public:
       if (_open.kind[side] == BoundaryKind::Wall) {
         continue;
       }
-      // flux along +z: into the domain at the low side, out of it at the high side
-      const double out =
+      // the flux along +z leaves the domain at the high side and enters it at the low side
+      const double outward =
           (side == ZHigh ? 1.0 : -1.0) * boundarySolidsFlux(_space, _cut, _fct, side);
-      (_open.kind[side] == BoundaryKind::Outflow ? report.solidsOut : report.solidsIn) +=
-          _open.kind[side] == BoundaryKind::Outflow ? out : -out;
+      if (_open.kind[side] == BoundaryKind::Outflow) {
+        report.solidsOut += outward;
+      } else {
+        report.solidsIn -= outward;
+      }
     }
     _solidsIn += report.solidsIn;
     _solidsOut += report.solidsOut;
@@ -369,11 +372,9 @@ public:
     MultigridOptions vopt;
     vopt.tolerance = _params.viscousTolerance;
     vopt.maxIterations = _params.maxIterations;
-    if (dims() == 3) {
-      // the open ends' normal velocities are data of the solve: u^n's (inflow given, outflow
-      // from the last projection)
-      copyEndNodes(_u.comp[2], _uStar.comp[2]);
-    }
+    // the open ends' normal velocities are data of the solve: u^n's (inflow given, outflow
+    // from the last projection)
+    copyEndNodes(_u.comp[2], _uStar.comp[2]);
     ViscousMultigrid<ExecutionSpace> viscous(_space, _grid, _velocityBc, _alpha, _mu, vopt,
                                              wallLawApertures());
     report.viscous = viscous.solvePcg(_uStar, _rhs);
@@ -659,8 +660,8 @@ private:
     if (_open.has(BoundaryKind::Outflow)) {
       fillGhostsScalar(_space, _grid, _pressureBc, p); // the outflow faces read p's ghosts
     }
+    // the inflow faces keep their velocity: p's ghost mirrors the cell there (zero gradient)
     correctVelocity(_space, _cut, _rhoFace, dt, p, u);
-    imposeInflow(u.comp[2], withInflow ? 1.0 : 0.0);
     if (outflow) {
       axpbyUnknowns(_space, _cells, 1.0, _gasHead, 1.0, p);
     }
