@@ -23,10 +23,10 @@ void writeCellFieldOutput(std::filesystem::path const& out, int index, double ti
     shape.insert(shape.begin(), static_cast<hsize_t>(g.nz));
   }
   static const std::map<std::string, std::string> units = {
-      {"volume_fraction", "1"}, {"pressure", "Pa"},     {"bed_pressure", "Pa"},
-      {"viscosity", "Pa s"},    {"strain_rate", "1/s"}, {"density", "kg/m^3"},
-      {"capacity", "1"},        {"temperature", "K"},   {"shear_stress", "Pa"},
-      {"axial_velocity", "m/s"}};
+      {"volume_fraction", "1"},  {"pressure", "Pa"},     {"bed_pressure", "Pa"},
+      {"viscosity", "Pa s"},     {"strain_rate", "1/s"}, {"density", "kg/m^3"},
+      {"capacity", "1"},         {"temperature", "K"},   {"shear_stress", "Pa"},
+      {"axial_velocity", "m/s"}, {"tracer", "1"}};
   io::XdmfGridStep step;
   step.time = time;
   step.h5File = (out / name).string();

@@ -42,27 +42,7 @@ cases::CaseSchema buildSchema() {
       .defaultsTo("2.0")
       .doc("Wall slip is averaged over the outputs after this time (spin-up excluded)");
   s.real("gravity").unit("m/s^2").nonNegative().defaultsTo("9.81").doc("Gravity, along -y");
-  s.boolean("heat.enabled").defaultsTo("false").doc("Solve the energy equation");
-  s.real("heat.alpha_eff")
-      .unit("m^2/s")
-      .nonNegative()
-      .defaultsTo("1e-6")
-      .doc("Effective bed thermal diffusivity (physics.md 6.3)");
-  s.real("heat.solid_heat_capacity")
-      .unit("J/(kg K)")
-      .positive()
-      .defaultsTo("1000")
-      .doc("Grain specific heat");
-  s.real("heat.gas_heat_capacity")
-      .unit("J/(kg K)")
-      .nonNegative()
-      .defaultsTo("1005")
-      .doc("Gas specific heat");
-  s.real("heat.gas_conductivity")
-      .unit("W/(m K)")
-      .nonNegative()
-      .defaultsTo("0.026")
-      .doc("Gas thermal conductivity");
+  addHeatKeys(s);
   s.real("heat.initial_left").unit("K").positive().defaultsTo("673").doc("Initial T, x < 0");
   s.real("heat.initial_right").unit("K").positive().defaultsTo("1073").doc("Initial T, x >= 0");
   s.require("output_interval at most the duration", [](const cases::CaseFile& c) {
@@ -94,11 +74,7 @@ ContinuumSettings continuumSettingsFromCase(const cases::CaseFile& c) {
   p.gravity[1] = -c.real("gravity");
   p.gravity[2] = 0.0;
   s.rheologySource = readTwoPhaseKeys(c, p);
-  p.energy = c.boolean("heat.enabled");
-  p.thermal.alphaEff = c.real("heat.alpha_eff");
-  p.thermal.solidHeatCapacity = c.real("heat.solid_heat_capacity");
-  p.thermal.gasHeatCapacity = c.real("heat.gas_heat_capacity");
-  p.thermal.gasConductivity = c.real("heat.gas_conductivity");
+  readHeatKeys(c, p);
   p.validate();
   return s;
 }

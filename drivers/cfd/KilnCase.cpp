@@ -63,6 +63,44 @@ cases::CaseSchema buildSchema() {
       .doc("Cells across the square cross-section (kiln plus 2 cells each side)");
   s.integer("grid.cells_along").range(2, 4096).defaultsTo("48").doc("Cells along the kiln");
   addTwoPhaseKeys(s);
+  addHeatKeys(s);
+  s.real("heat.initial_temperature")
+      .unit("K")
+      .positive()
+      .defaultsTo("300")
+      .doc("Initial temperature of the bed and the gas");
+  s.real("heat.feed_temperature").unit("K").positive().defaultsTo("300").doc("Feed temperature");
+  s.real("heat.air_temperature")
+      .unit("K")
+      .positive()
+      .defaultsTo("300")
+      .doc("Air inlet temperature");
+  s.real("heat.wall_temperature")
+      .unit("K")
+      .positive()
+      .defaultsTo("300")
+      .doc("Shell temperature (a hot shell: the cylinder's cut faces, not the end plates)");
+  s.real("heat.wall_bed_transfer")
+      .unit("W/(m^2 K)")
+      .nonNegative()
+      .defaultsTo("0")
+      .doc("Shell-to-bed heat transfer coefficient (contact); 0 with wall_gas_transfer 0: "
+           "an adiabatic shell");
+  s.real("heat.wall_gas_transfer")
+      .unit("W/(m^2 K)")
+      .nonNegative()
+      .defaultsTo("0")
+      .doc("Shell-to-gas heat transfer coefficient (convection)");
+  s.real("tracer.pulse_start")
+      .unit("s")
+      .nonNegative()
+      .defaultsTo("0")
+      .doc("Start of a passive tracer pulse in the feed (residence time)");
+  s.real("tracer.pulse_duration")
+      .unit("s")
+      .nonNegative()
+      .defaultsTo("0")
+      .doc("Length of the tracer pulse; 0: no tracer");
   s.real("time.duration").unit("s").positive().defaultsTo("49").doc("Simulated time");
   s.real("time.output_interval")
       .unit("s")
@@ -90,6 +128,12 @@ cases::CaseSchema buildSchema() {
   s.require("output_interval at most the duration", [](const cases::CaseFile& c) {
     return c.real("time.output_interval") <= c.real("time.duration");
   });
+  s.require("the tracer pulse inside the run (pulse_start + pulse_duration < duration)",
+            [](const cases::CaseFile& c) {
+              return c.real("tracer.pulse_duration") == 0.0 ||
+                     c.real("tracer.pulse_start") + c.real("tracer.pulse_duration") <
+                         c.real("time.duration");
+            });
   return s;
 }
 
@@ -126,6 +170,15 @@ KilnSettings kilnSettingsFromCase(const cases::CaseFile& c) {
   p.gravity[1] = -c.real("gravity") * std::cos(slope);
   p.gravity[2] = c.real("gravity") * std::sin(slope); // towards the discharge end (+z)
   s.rheologySource = readTwoPhaseKeys(c, p);
+  readHeatKeys(c, p);
+  s.initialTemperature = c.real("heat.initial_temperature");
+  s.feedTemperature = c.real("heat.feed_temperature");
+  s.airTemperature = c.real("heat.air_temperature");
+  p.thermal.wallTemperature = c.real("heat.wall_temperature");
+  p.thermal.wallBedTransfer = c.real("heat.wall_bed_transfer");
+  p.thermal.wallGasTransfer = c.real("heat.wall_gas_transfer");
+  s.tracerStart = c.real("tracer.pulse_start");
+  s.tracerDuration = c.real("tracer.pulse_duration");
   p.validate();
   return s;
 }

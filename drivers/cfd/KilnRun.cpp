@@ -54,10 +54,14 @@ double peakResidentBytes() {
 }
 
 /// The cell fields of one output, with the axial velocity (w at the cell centres) for the
-/// rendered bed surface.
-CellFieldOutput gatherFields(Solver const& solver) {
+/// rendered bed surface, the temperature (heat on) and the tracer (tracer < 0: none).
+CellFieldOutput gatherFields(Solver const& solver, int tracer) {
   CellFieldOutput out;
   out.addSolverFields(solver);
+  out.add("temperature", solver.temperature(), solver.grid());
+  if (tracer >= 0) {
+    out.add("tracer", solver.tracerTemperature(tracer), solver.grid());
+  }
   std::vector<double>& axial = out.scalars["axial_velocity"];
   axial.resize(out.velocity.size() / 3);
   for (std::size_t n = 0; n < axial.size(); ++n) {
@@ -65,6 +69,42 @@ CellFieldOutput gatherFields(Solver const& solver) {
   }
   return out;
 }
+
+/// Solids-weighted mean temperature of an output (sum capacity phi T / sum capacity phi; 0
+/// without temperature).
+double bedMeanTemperature(CellFieldOutput const& f) {
+  const auto T = f.scalars.find("temperature");
+  if (T == f.scalars.end()) {
+    return 0.0;
+  }
+  std::vector<double> const& phi = f.scalars.at("volume_fraction");
+  std::vector<double> const& cap = f.scalars.at("capacity");
+  double weighted = 0.0, weight = 0.0;
+  for (std::size_t n = 0; n < phi.size(); ++n) {
+    weighted += cap[n] * phi[n] * T->second[n];
+    weight += cap[n] * phi[n];
+  }
+  return weight > 0.0 ? weighted / weight : 0.0;
+}
+
+/// A passive tracer pulse in the feed and the residence time it gives: the mean time between
+/// entering and leaving over the tagged solids that have left (the first moment of the
+/// discharge rate less the pulse's mid-time), and the fraction that has left.
+struct ResidenceTracer {
+  int index = -1; ///< the solver's tracer; -1: none
+  double start = 0.0, end = 0.0;
+  double injected = 0.0, recovered = 0.0, firstMoment = 0.0;
+
+  bool tagging(double t) const { return t >= start - 1e-12 && t < end - 1e-12; }
+  void add(double t0, double dt, double in, double out) {
+    injected += in;
+    recovered += out;
+    firstMoment += (t0 + 0.5 * dt) * out;
+  }
+  double meanResidenceTime() const {
+    return recovered > 0.0 ? firstMoment / recovered - 0.5 * (start + end) : 0.0;
+  }
+};
 
 /// Largest speed over the cells of an output.
 double maxSpeed(CellFieldOutput const& f) {
@@ -117,6 +157,23 @@ int runKiln(KilnRunOptions const& o) {
   Solver solver(Space{}, grid, domain, s.params, cut, ends);
   solver.setFlatBed(flatBedLevel(0.5 * s.diameter, s.fill));
   solver.setInflow(domain.inlet);
+  const bool heatOn = s.params.energy;
+  if (heatOn) {
+    Kokkos::deep_copy(solver.temperature(), s.initialTemperature);
+    solver.setInflowTemperature(InflowTemperature{s.feedTemperature, s.airTemperature});
+  }
+  ResidenceTracer tracer;
+  if (s.tracerDuration > 0.0) {
+    // content = solids volume x concentration: solids only, carried, never diffused
+    ThermalParameters tagged;
+    tagged.solidHeatCapacity = 1.0 / s.params.solidDensity;
+    tagged.gasHeatCapacity = 0.0;
+    tagged.alphaEff = 0.0;
+    tagged.gasConductivity = 0.0;
+    tracer.index = solver.addTemperatureTracer(tagged);
+    tracer.start = s.tracerStart;
+    tracer.end = s.tracerStart + s.tracerDuration;
+  }
   const double cellVolume = grid.hx * grid.hy * grid.hz;
   spdlog::info("kiln: {} x {} x {} cells (h = {:.3g} m across, {:.3g} m along), L = {} m, D = {} "
                "m, {} rpm, slope {} deg, fill {}, feed {:.3g} m3/s of solids, rheology from {}",
@@ -130,22 +187,61 @@ int runKiln(KilnRunOptions const& o) {
   double displaced = 0.0, phiLo = 0.0, phiHi = 0.0, worstStep = 0.0;
   StepStatistics stats;
   std::vector<io::XdmfGridStep> outputs;
-  dem::TimeSeries series((out / "timeseries.csv").string(),
-                         {"time", "dt", "holdup_m3", "solids_in_m3", "solids_out_m3",
-                          "dam_displaced_m3", "balance_error_m3", "outflow_rate_m3_per_s",
-                          "max_speed"});
+  std::vector<std::string> columns = {"time",
+                                      "dt",
+                                      "holdup_m3",
+                                      "solids_in_m3",
+                                      "solids_out_m3",
+                                      "dam_displaced_m3",
+                                      "balance_error_m3",
+                                      "outflow_rate_m3_per_s",
+                                      "max_speed"};
+  if (heatOn) {
+    for (char const* c : {"heat_J", "heat_in_J", "heat_out_J", "heat_from_shell_J",
+                          "heat_balance_error_J", "bed_mean_temperature_K"}) {
+      columns.emplace_back(c);
+    }
+  }
+  if (tracer.index >= 0) {
+    columns.emplace_back("tracer_in_m3");
+    columns.emplace_back("tracer_out_m3");
+  }
+  dem::TimeSeries series((out / "timeseries.csv").string(), columns);
   const auto balanceError = [&] {
     return (solver.solids() - solids0 -
             (solver.solidsInTotal() - solver.solidsOutTotal() - displaced)) *
            cellVolume;
   };
+  // heat (heat() units): in and out at the ends, from the shell, taken by the dam ring
+  const double heat0 = solver.heat();
+  double heatIn = 0.0, heatOut = 0.0, heatShell = 0.0, heatDisplaced = 0.0, worstHeatStep = 0.0;
+  const auto heatBalanceError = [&] {
+    return (solver.heat() - heat0 - (heatIn - heatOut + heatShell - heatDisplaced)) * cellVolume;
+  };
   int outputIndex = 0;
   const auto record = [&](double dt, double outflowRate) {
-    const CellFieldOutput f = gatherFields(solver);
+    const CellFieldOutput f = gatherFields(solver, tracer.index);
     const double speed = maxSpeed(f);
-    series.add({solver.time(), dt, solver.solids() * cellVolume,
-                solver.solidsInTotal() * cellVolume, solver.solidsOutTotal() * cellVolume,
-                displaced * cellVolume, balanceError(), outflowRate, speed});
+    std::vector<double> row = {solver.time(),
+                               dt,
+                               solver.solids() * cellVolume,
+                               solver.solidsInTotal() * cellVolume,
+                               solver.solidsOutTotal() * cellVolume,
+                               displaced * cellVolume,
+                               balanceError(),
+                               outflowRate,
+                               speed};
+    if (heatOn) {
+      for (double v : {solver.heat() * cellVolume, heatIn * cellVolume, heatOut * cellVolume,
+                       heatShell * cellVolume, heatBalanceError(), bedMeanTemperature(f)}) {
+        row.push_back(v);
+      }
+    }
+    if (tracer.index >= 0) {
+      row.push_back(tracer.injected * cellVolume);
+      row.push_back(tracer.recovered * cellVolume);
+    }
+    series.add(row);
     series.flush();
     writeCellFieldOutput(out, outputIndex++, solver.time(), grid, f, info, outputs);
     return speed;
@@ -161,9 +257,35 @@ int runKiln(KilnRunOptions const& o) {
     if (damPending) {
       landing = std::min(landing, s.damOnAt);
     }
+    for (double edge : {tracer.start, tracer.end}) { // the pulse's edges
+      if (tracer.index >= 0 && edge > solver.time() + 1e-12) {
+        landing = std::min(landing, edge);
+      }
+    }
     const double dt = landOn(solver.time(), solver.stableTimeStep(reason), landing, reason);
+    const double t0 = solver.time();
+    if (tracer.index >= 0) {
+      solver.setTracerInflow(tracer.index, InflowTemperature{tracer.tagging(t0) ? 1.0 : 0.0, 0.0});
+    }
     const TwoPhaseStepReport r = solver.step(dt);
     stats.add(dt, reason, r);
+    if (heatOn) {
+      heatIn += r.heatIn;
+      heatOut += r.heatOut;
+      heatShell += r.heatFromShell;
+      const double exchanged =
+          std::fabs(r.heatIn) + std::fabs(r.heatOut) + std::fabs(r.heatFromShell);
+      if (exchanged > 0.0) {
+        worstHeatStep =
+            std::max(worstHeatStep, std::fabs(r.heatAfter - r.heatBefore -
+                                              (r.heatIn - r.heatOut + r.heatFromShell)) /
+                                        exchanged);
+      }
+    }
+    if (tracer.index >= 0) {
+      tracer.add(t0, dt, solver.tracerInLastStep(tracer.index),
+                 solver.tracerOutLastStep(tracer.index));
+    }
     const double throughput = r.solidsIn + r.solidsOut;
     if (throughput > 0.0) {
       worstStep = std::max(worstStep,
@@ -176,8 +298,10 @@ int runKiln(KilnRunOptions const& o) {
                                            solver.time(), stats.steps, o.outputDirectory));
     }
     if (damPending && solver.time() >= s.damOnAt * (1.0 - 1e-12)) {
+      const double heatBefore = solver.heat();
       const double took = solver.changeShape(kilnDomain(s, true));
       displaced += took;
+      heatDisplaced += heatBefore - solver.heat();
       damPending = false;
       spdlog::info("kiln: dam ring in at t = {:.2f} s (height {} m, width {} m); it displaced "
                    "{:.4g} m3 of solids",
@@ -194,6 +318,12 @@ int runKiln(KilnRunOptions const& o) {
                    solver.time(), stats.steps, dt, reason, solver.solids() * cellVolume,
                    solver.solidsInTotal() * cellVolume, solver.solidsOutTotal() * cellVolume, rate,
                    balanceError(), speed, phiLo, phiHi, secondsSince(wallStart));
+      if (heatOn) {
+        spdlog::info("  heat: in {:.4g} J, out {:.4g} J, from the shell {:.4g} J, balance error "
+                     "{:.2e} J",
+                     heatIn * cellVolume, heatOut * cellVolume, heatShell * cellVolume,
+                     heatBalanceError());
+      }
     }
   }
   const double loopSeconds = secondsSince(loopStart);
@@ -223,6 +353,38 @@ int runKiln(KilnRunOptions const& o) {
   summary["wall_seconds"] = secondsSince(wallStart);
   summary["peak_resident_bytes"] = peakResidentBytes();
   summary["peak_resident_bytes_per_cell"] = peakResidentBytes() / double(grid.numCells());
+  if (heatOn) {
+    const double exchanged =
+        (std::fabs(heatIn) + std::fabs(heatOut) + std::fabs(heatShell)) * cellVolume;
+    summary["heat"] = {
+        {"initial_J", heat0 * cellVolume},
+        {"final_J", solver.heat() * cellVolume},
+        {"in_J", heatIn * cellVolume},
+        {"out_J", heatOut * cellVolume},
+        {"from_shell_J", heatShell * cellVolume},
+        {"dam_displaced_J", heatDisplaced * cellVolume},
+        {"balance_error_J", heatBalanceError()},
+        {"balance_error_of_exchanged",
+         exchanged > 0.0 ? std::fabs(heatBalanceError()) / exchanged : 0.0},
+        {"balance_error_worst_step_of_exchanged", worstHeatStep},
+        {"bed_mean_temperature_K", bedMeanTemperature(gatherFields(solver, tracer.index))}};
+  }
+  if (tracer.index >= 0) {
+    // hold-up over the feed rate: the mean residence time of a steady kiln
+    const double feedRate = solver.solidsInTotal() / solver.time();
+    summary["tracer"] = {
+        {"pulse_start_s", tracer.start},
+        {"pulse_end_s", tracer.end},
+        {"injected_m3", tracer.injected * cellVolume},
+        {"recovered_m3", tracer.recovered * cellVolume},
+        {"recovered_fraction", tracer.injected > 0.0 ? tracer.recovered / tracer.injected : 0.0},
+        {"mean_residence_time_of_recovered_s", tracer.meanResidenceTime()},
+        // the mean residence time only once (nearly) all the tagged solids have left
+        {"mean_residence_time_s", tracer.recovered >= 0.99 * tracer.injected
+                                      ? nlohmann::json(tracer.meanResidenceTime())
+                                      : nlohmann::json(nullptr)},
+        {"holdup_over_feed_s", feedRate > 0.0 ? solver.solids() / feedRate : 0.0}};
+  }
   summary["outputs"] = {{"fields", "fields.xmf"}, {"timeseries", "timeseries.csv"}};
   io::writeSummaryJson((out / "summary.json").string(), summary);
   spdlog::info("kiln: {} steps to t = {:.2f} s in {:.1f} s ({:.3g} cell-updates/s); hold-up {:.4g} "

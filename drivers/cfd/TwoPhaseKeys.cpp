@@ -101,4 +101,36 @@ std::string readTwoPhaseKeys(const cases::CaseFile& c, TwoPhaseParameters& p) {
   return path.string();
 }
 
+void addHeatKeys(cases::CaseSchema& s) {
+  s.boolean("heat.enabled").defaultsTo("false").doc("Solve the energy equation");
+  s.real("heat.alpha_eff")
+      .unit("m^2/s")
+      .nonNegative()
+      .defaultsTo("1e-6")
+      .doc("Effective bed thermal diffusivity (physics.md 6.3)");
+  s.real("heat.solid_heat_capacity")
+      .unit("J/(kg K)")
+      .positive()
+      .defaultsTo("1000")
+      .doc("Grain specific heat");
+  s.real("heat.gas_heat_capacity")
+      .unit("J/(kg K)")
+      .nonNegative()
+      .defaultsTo("1005")
+      .doc("Gas specific heat");
+  s.real("heat.gas_conductivity")
+      .unit("W/(m K)")
+      .nonNegative()
+      .defaultsTo("0.026")
+      .doc("Gas thermal conductivity");
+}
+
+void readHeatKeys(const cases::CaseFile& c, TwoPhaseParameters& p) {
+  p.energy = c.boolean("heat.enabled");
+  p.thermal.alphaEff = c.real("heat.alpha_eff");
+  p.thermal.solidHeatCapacity = c.real("heat.solid_heat_capacity");
+  p.thermal.gasHeatCapacity = c.real("heat.gas_heat_capacity");
+  p.thermal.gasConductivity = c.real("heat.gas_conductivity");
+}
+
 } // namespace hikiln::cfd

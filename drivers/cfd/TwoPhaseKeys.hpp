@@ -21,4 +21,11 @@ void addTwoPhaseKeys(cases::CaseSchema& s);
 /// rheology file's path.
 std::string readTwoPhaseKeys(const cases::CaseFile& c, TwoPhaseParameters& p);
 
+/// \brief Adds the energy equation's shared keys (heat.enabled, heat.alpha_eff, the heat
+/// capacities, the gas conductivity) to s.
+void addHeatKeys(cases::CaseSchema& s);
+
+/// \brief Reads the keys of addHeatKeys into p (energy and thermal).
+void readHeatKeys(const cases::CaseFile& c, TwoPhaseParameters& p);
+
 } // namespace hikiln::cfd

@@ -13,7 +13,10 @@ case.resolved.yaml) and writes:
 - kiln_midplane.png: the vertical axial mid-plane (x = 0) of each snapshot, solids fraction as
   colour and the in-plane velocity (axial, vertical) as arrows;
 - kiln_bed_depth.csv / .png: the axial bed-depth profile of each snapshot, the depth of a flat
-  bed holding each cross-section's solids (phi_max: the largest phi at the start).
+  bed holding each cross-section's solids (phi_max: the largest phi at the start);
+- with the energy equation on (heat.enabled): kiln_heat.png, the bed's mean temperature and the
+  heat balance error against time, and kiln_bed_temperature.csv / .png, the bed's mean
+  temperature per cross-section (solids-weighted) along the kiln at each snapshot.
 
 Written for Debian's python3 with python3-matplotlib, -numpy, -h5py and -skimage:
 
@@ -111,6 +114,33 @@ def bed_depth(fields, spacing, phi_max, radius):
     return np.array([segment_depth(a, radius) for a in area])
 
 
+def bed_temperature(fields):
+    """Per cross-section (along z): the solids-weighted mean temperature (NaN without solids)."""
+    solids = fields["volume_fraction"] * fields["capacity"]
+    weight = solids.sum(axis=(1, 2))
+    heat = (solids * fields["temperature"]).sum(axis=(1, 2))
+    return np.where(weight > 0, heat / np.maximum(weight, 1e-300), np.nan)
+
+
+def axial_profiles(out, name, z, times, profiles, column, ylabel, title):
+    """name.csv (z and one column per snapshot) and name.png of profiles along the kiln."""
+    with open(os.path.join(out, f"{name}.csv"), "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["z_m"] + [f"{column}_t{time:g}" for time in times])
+        for k in range(len(z)):
+            writer.writerow([f"{z[k]:.6g}"] + [f"{p[k]:.6g}" for p in profiles])
+    fig, ax = plt.subplots(figsize=(8, 4))
+    for time, p in zip(times, profiles):
+        ax.plot(z, p, label=f"t = {time:g} s")
+    ax.set_xlabel("z (m), inlet at 0")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend()
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, f"{name}.png"), dpi=120)
+    plt.close(fig)
+
+
 def surface(fields, level, origin, spacing):
     """Triangles (N x 3 x 3, x y z in m) of the iso-surface phi = level and the axial velocity
     at their centroids (nearest cell)."""
@@ -175,6 +205,24 @@ def main():
     fig.savefig(os.path.join(args.out, "kiln_holdup.png"), dpi=120)
     plt.close(fig)
 
+    if "heat_J" in s:
+        fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+        top.plot(s["time"], s["bed_mean_temperature_K"])
+        top.set_ylabel("bed mean temperature (K)")
+        top.set_title("Kiln heat: bed temperature and heat balance")
+        bottom.semilogy(s["time"][later],
+                        np.maximum(np.abs(s["heat_balance_error_J"][later]), 1e-300),
+                        label="|in - out + shell - accumulation - dam|")
+        for key, label in (("heat_from_shell_J", "from the shell (cumulative)"),
+                           ("heat_in_J", "in at the inlet (cumulative)")):
+            bottom.semilogy(s["time"][later], np.maximum(s[key][later], 1e-300), label=label)
+        bottom.set_ylabel("heat (J)")
+        bottom.set_xlabel("time (s)")
+        bottom.legend()
+        fig.tight_layout()
+        fig.savefig(os.path.join(args.out, "kiln_heat.png"), dpi=120)
+        plt.close(fig)
+
     outputs = read_outputs(args.run)
     wanted = snapshot_times(args.run) or [t for t, _ in outputs[:: max(1, len(outputs) // 6)]]
     chosen = []
@@ -224,22 +272,15 @@ def main():
     ratio = (extent[2][1] - extent[2][0]) / (extent[1][1] - extent[1][0])
     radius = kiln_radius(args.run)
     z = origin[2] + (np.arange(nz) + 0.5) * spacing[2]
+    times = [time for time, _, _, _ in surfaces]
     depths = [bed_depth(fields, spacing, phi_max, radius) for _, fields, _, _ in surfaces]
-    with open(os.path.join(args.out, "kiln_bed_depth.csv"), "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(["z_m"] + [f"depth_m_t{time:g}" for time, _, _, _ in surfaces])
-        for k in range(nz):
-            writer.writerow([f"{z[k]:.6g}"] + [f"{d[k]:.6g}" for d in depths])
-    fig, ax = plt.subplots(figsize=(8, 4))
-    for (time, _, _, _), d in zip(surfaces, depths):
-        ax.plot(z, d, label=f"t = {time:g} s")
-    ax.set_xlabel("z (m), inlet at 0")
-    ax.set_ylabel("bed depth (m)")
-    ax.set_title("Axial bed-depth profile (flat bed of the same solids per cross-section)")
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(os.path.join(args.out, "kiln_bed_depth.png"), dpi=120)
-    plt.close(fig)
+    axial_profiles(args.out, "kiln_bed_depth", z, times, depths, "depth_m", "bed depth (m)",
+                   "Axial bed-depth profile (flat bed of the same solids per cross-section)")
+    if "temperature" in first:
+        axial_profiles(args.out, "kiln_bed_temperature", z, times,
+                       [bed_temperature(fields) for _, fields, _, _ in surfaces], "bed_T_K",
+                       "bed mean temperature (K)",
+                       "Bed temperature along the kiln (solids-weighted, per cross-section)")
 
     fig, axes = plt.subplots(len(surfaces), 1, figsize=(1.8 + 1.5 * ratio, 1.9 * len(surfaces)),
                              squeeze=False, layout="constrained")

@@ -27,7 +27,9 @@
 ///    left grad p^n / rho_gas accelerated the gas to metres per second. The aperture-weighted
 ///    divergence of u^{n+1} is zero to the solver tolerance.
 /// 6. Energy (optional, EnergyKernels.hpp): the heat content rides on step 1's fluxes, then an
-///    implicit diffusion with the effective bed diffusivity (CellMultigrid, PCG).
+///    implicit diffusion with the effective bed diffusivity and a hot shell's transfer
+///    (CellMultigrid, PCG). Open ends carry heat in (at the inflow's temperatures,
+///    setInflowTemperature) and out with the flow only.
 /// dt is the largest step whose outflow from every cell is at most `cfl` of its fluid volume
 /// (advection), capped by dtMax; the reason is returned with the step.
 ///
@@ -131,8 +133,17 @@ struct TwoPhaseStepReport {
   SolveStats viscous, pressure, energy;
   double heatBefore = 0.0;    ///< heat content before the step (energy on)
   double heatAfter = 0.0;     ///< ... after it
+  double heatIn = 0.0;        ///< carried in through Inflow sides in the step (heat() units)
+  double heatOut = 0.0;       ///< carried out through Outflow sides in the step
+  double heatFromShell = 0.0; ///< from a hot shell in the step (ThermalParameters)
   int heatSubsteps = 0;       ///< sub-steps of the heat advection (advectHeat())
   double maxDivergence = 0.0; ///< max |aperture-weighted div u| after the projection [1/s]
+};
+
+/// \brief Temperatures of what flows in through the Inflow sides (the energy equation and each
+/// temperature tracer have their own) [K, or tracer units].
+struct InflowTemperature {
+  double solid = 0.0, gas = 0.0;
 };
 
 /// \brief The two-phase continuum model in a shell (see the file comment).
@@ -167,6 +178,8 @@ public:
           per ? BoundaryKind::Periodic
               : (end == BoundaryKind::Outflow ? BoundaryKind::Value : BoundaryKind::Wall);
       _velocityBc.kind[side] = per ? BoundaryKind::Periodic : end;
+      // heat leaves and enters an open end with the flow only: no diffusive flux there
+      _heatBc.kind[side] = per ? BoundaryKind::Periodic : BoundaryKind::Wall;
     }
     const auto cellField = [&](char const* label) {
       return makeField(space, grid, Staggering::Cell, label);
@@ -180,7 +193,7 @@ public:
     _div = cellField("hikiln::cfd::div");
     _pAlpha = cellField("hikiln::cfd::pAlpha");
     if (params.energy) {
-      refuseOpenEnds("the energy equation");
+      params.thermal.validate("hikiln::cfd::TwoPhaseParameters");
       _T = cellField("hikiln::cfd::T");
       allocateHeatWork();
     }
@@ -232,6 +245,10 @@ public:
     _inflowSet = true;
     startInflow();
   }
+
+  /// \brief Temperatures of the solids and the gas flowing in through the Inflow sides (energy
+  /// on); both 0 K until set, so set them before stepping a kiln with energy.
+  void setInflowTemperature(InflowTemperature const& t) { _inflowT = t; }
 
   /// \brief Replaces the shape (a kiln's dam ring switched on) and measures the cut cells again.
   /// phi keeps its value where the fluid stays and counts for nothing where the new shape is
@@ -349,11 +366,20 @@ public:
     _solidsIn += report.solidsIn;
     _solidsOut += report.solidsOut;
     if (_params.energy) {
-      report.energy = energyStep(dt, _T, _params.thermal, &report.heatSubsteps);
+      const HeatStep h = energyStep(dt, _T, _params.thermal, _inflowT);
+      report.energy = h.solve;
+      report.heatSubsteps = h.substeps;
+      report.heatIn = h.in;
+      report.heatOut = h.out;
+      report.heatFromShell = h.shell;
       report.heatAfter = heat();
     }
-    for (TemperatureTracer const& tracer : _tracers) {
-      energyStep(dt, tracer.temperature, tracer.thermal);
+    for (TemperatureTracer& tracer : _tracers) {
+      const HeatStep h = energyStep(dt, tracer.temperature, tracer.thermal, tracer.inflow);
+      tracer.lastIn = h.in;
+      tracer.lastOut = h.out;
+      tracer.totalIn += h.in;
+      tracer.totalOut += h.out;
     }
     updateDensity();
     updateViscosity();
@@ -398,7 +424,8 @@ public:
 
   /// \brief Heat content sum(capacity x C x T) (x cell volume = J); 0 without energy.
   double heat() {
-    return _params.energy ? heatContent(_space, _cut, heatCapacities(), _phi, _T) : 0.0;
+    return _params.energy ? heatContent(_space, _cut, heatCapacities(_params.thermal), _phi, _T)
+                          : 0.0;
   }
   /// \brief The temperature field (empty without energy); fill it before stepping.
   field_type const& temperature() const { return _T; }
@@ -408,10 +435,17 @@ public:
   /// returns its index. Many tracers share one flow computation: `hikiln fit-diffusivity` runs
   /// all its candidate diffusivities in one continuum run. Fill it before stepping.
   int addTemperatureTracer(double alphaEff) {
-    refuseOpenEnds("temperature tracers");
+    ThermalParameters thermal = _params.thermal;
+    thermal.alphaEff = alphaEff;
+    return addTemperatureTracer(thermal);
+  }
+  /// \brief Adds a passive tracer with its own thermal parameters. A solids tracer (e.g. a
+  /// residence-time pulse in a kiln's feed) has gasHeatCapacity = 0 and nothing that conducts
+  /// (ThermalParameters::conducts()): it is then advected with the solids only, and its content
+  /// (tracerHeat) is solids volume x solidHeatCapacity x concentration.
+  int addTemperatureTracer(ThermalParameters const& thermal) {
     TemperatureTracer tracer;
-    tracer.thermal = _params.thermal;
-    tracer.thermal.alphaEff = alphaEff;
+    tracer.thermal = thermal;
     tracer.thermal.validate("hikiln::cfd::TwoPhaseSolver::addTemperatureTracer");
     tracer.temperature = makeField(_space, _grid, Staggering::Cell, "hikiln::cfd::tracerT");
     allocateHeatWork();
@@ -420,10 +454,19 @@ public:
   }
   /// \brief Temperature field of tracer n (addTemperatureTracer).
   field_type const& tracerTemperature(int n) const { return _tracers.at(n).temperature; }
-  /// \brief Heat content of tracer n, as heat() (J per unit depth).
+  /// \brief Heat content of tracer n, as heat() with the tracer's heat capacities.
   double tracerHeat(int n) {
-    return heatContent(_space, _cut, heatCapacities(), _phi, _tracers.at(n).temperature);
+    TemperatureTracer const& t = _tracers.at(n);
+    return heatContent(_space, _cut, heatCapacities(t.thermal), _phi, t.temperature);
   }
+  /// \brief What flows in with tracer n through the Inflow sides (from the next step on).
+  void setTracerInflow(int n, InflowTemperature const& t) { _tracers.at(n).inflow = t; }
+  /// \brief Tracer n's content carried in and out through the open ends in the last step and
+  /// since the start (tracerHeat() units).
+  double tracerInLastStep(int n) const { return _tracers.at(n).lastIn; }
+  double tracerOutLastStep(int n) const { return _tracers.at(n).lastOut; }
+  double tracerInTotal(int n) const { return _tracers.at(n).totalIn; }
+  double tracerOutTotal(int n) const { return _tracers.at(n).totalOut; }
 
   /// \brief Solids content sum(capacity x phi) (x cell volume = m^3).
   double solids() { return solidsContent(_space, _cut, _phi); }
@@ -526,9 +569,9 @@ private:
     return s;
   }
 
-  HeatCapacities heatCapacities() const {
-    return HeatCapacities{_params.solidDensity * _params.thermal.solidHeatCapacity,
-                          _params.gasDensity * _params.thermal.gasHeatCapacity};
+  HeatCapacities heatCapacities(ThermalParameters const& thermal) const {
+    return HeatCapacities{_params.solidDensity * thermal.solidHeatCapacity,
+                          _params.gasDensity * thermal.gasHeatCapacity};
   }
 
   /// \brief Scratch fields of the energy step (shared by temperature() and the tracers).
@@ -549,29 +592,55 @@ private:
     }
   }
 
+  /// \brief What one energy step did to one temperature field (heat() units).
+  struct HeatStep {
+    SolveStats solve;
+    int substeps = 0;
+    double in = 0.0, out = 0.0, shell = 0.0;
+  };
+
   /// \brief Advects the temperature T with the fluxes of the volume-fraction step just taken
-  /// (u^n) and diffuses it implicitly with the given thermal parameters.
-  SolveStats energyStep(double dt, field_type const& T, ThermalParameters const& thermal,
-                        int* substeps = nullptr) {
-    const HeatCapacities heat = heatCapacities();
-    const int m = advectHeat(_space, _cut, _periodic, _u, _fct, dt, 0.5 * _params.rheology.phiMax,
-                             heat, _phiOld, _phi, T, _Tstar);
-    if (substeps) {
-      *substeps = m;
+  /// (u^n; at the open ends what flows in has the temperatures `inflow`) and diffuses it
+  /// implicitly with the given thermal parameters (skipped when nothing conducts).
+  HeatStep energyStep(double dt, field_type const& T, ThermalParameters const& thermal,
+                      InflowTemperature const& inflow) {
+    HeatStep result;
+    const HeatCapacities heat = heatCapacities(thermal);
+    for (int side : {ZLow, ZHigh}) {
+      if (_open.kind[side] != BoundaryKind::Wall) {
+        fillEndTemperatureGhosts(_space, _grid, side, _open.kind[side] == BoundaryKind::Inflow,
+                                 _inflowPhi, heat, inflow.solid, inflow.gas, T);
+      }
     }
-    diffusionCoefficients(_space, _cut, _periodic, heat, thermal, _params.rheology.phiMax, dt, _phi,
-                          _Tstar, _kappa, _tAlpha, _tBeta, _tRhs);
+    const double phiMax = _params.rheology.phiMax;
+    const HeatAdvectionReport advected = advectHeat(_space, _cut, _periodic, _u, _fct, dt,
+                                                    0.5 * phiMax, heat, _phiOld, _phi, T, _Tstar);
+    result.substeps = advected.substeps;
+    for (int side : {ZLow, ZHigh}) {
+      if (_open.kind[side] == BoundaryKind::Inflow) {
+        result.in -= advected.outward[side];
+      } else if (_open.kind[side] == BoundaryKind::Outflow) {
+        result.out += advected.outward[side];
+      }
+    }
+    if (!thermal.conducts()) {
+      Kokkos::deep_copy(_space, T, _Tstar);
+      return result;
+    }
+    diffusionCoefficients(_space, _cut, _periodic, heat, thermal, phiMax, dt, _phi, _Tstar, _kappa,
+                          _tAlpha, _tBeta, _tRhs);
     MultigridOptions topt;
     topt.tolerance = _params.pressureTolerance;
     topt.maxIterations = _params.maxIterations;
-    CellMultigrid<ExecutionSpace> mg(_space, _grid, _pressureBc, _tAlpha, _tBeta, topt);
+    CellMultigrid<ExecutionSpace> mg(_space, _grid, _heatBc, _tAlpha, _tBeta, topt);
     Kokkos::deep_copy(_space, T, _Tstar);
-    const SolveStats stats = mg.solvePcg(T, _tRhs);
-    if (!stats.converged) {
+    result.solve = mg.solvePcg(T, _tRhs);
+    if (!result.solve.converged) {
       throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: energy solve did not converge (" +
-                               std::to_string(stats.iterations) + " iterations)");
+                               std::to_string(result.solve.iterations) + " iterations)");
     }
-    return stats;
+    result.shell = dt * shellHeatRate(_space, _cut, thermal, phiMax, _phi, T);
+    return result;
   }
 
   void updateDensity() {
@@ -690,13 +759,6 @@ private:
     }
   }
 
-  void refuseOpenEnds(char const* what) const {
-    if (_open.has(BoundaryKind::Inflow) || _open.has(BoundaryKind::Outflow)) {
-      throw std::invalid_argument(std::string("hikiln::cfd::TwoPhaseSolver: ") + what +
-                                  " with open ends is not supported yet");
-    }
-  }
-
   /// \brief w on the Inflow sides' boundary faces = scale x the given inflow (setInflow).
   void imposeInflow(field_type const& w, double scale = 1.0) {
     for (int side : {ZLow, ZHigh}) {
@@ -743,7 +805,7 @@ private:
   bool _periodic[3] = {false, false, true};
   CutCellOptions _cutOptions;
   CutCells<memory_space> _cut;
-  ScalarBoundaries _pressureBc;
+  ScalarBoundaries _pressureBc, _heatBc;
   VelocityBoundaries _velocityBc;
   UnknownBox _cells;
   field_type _phi, _p, _pBed, _rho, _mu, _gammaDot, _div, _pAlpha;
@@ -754,10 +816,13 @@ private:
   struct TemperatureTracer {
     field_type temperature;
     ThermalParameters thermal;
+    InflowTemperature inflow;
+    double lastIn = 0.0, lastOut = 0.0, totalIn = 0.0, totalOut = 0.0;
   };
   std::vector<TemperatureTracer> _tracers;
   field_type _inflowW, _inflowPhi, _gasHead; ///< open ends only
   bool _inflowSet = false;
+  InflowTemperature _inflowT;
   double _solidsIn = 0.0, _solidsOut = 0.0;
   double _time = 0.0;
 };

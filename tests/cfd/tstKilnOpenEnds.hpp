@@ -13,9 +13,7 @@
 // - This backend (any thread count) agrees with Kokkos::Serial to the solvers' tolerance.
 // - Bad set-ups are refused with the reason.
 #include "CfdTestUtils.hpp"
-#include "TwoPhaseTestUtils.hpp"
-#include "kernels/cfd/KilnGeometry.hpp"
-#include "solvers/cfd/TwoPhaseSolver.hpp"
+#include "KilnTestUtils.hpp"
 
 #include <gtest/gtest.h>
 
@@ -28,45 +26,9 @@
 namespace {
 
 using namespace hikiln::cfd;
+using namespace hikiln::cfd::test::small_kiln;
 using space = TEST_EXECSPACE;
 using solver_type = TwoPhaseSolver<space, KilnDomain>;
-constexpr double pi = hikiln::constants::pi;
-
-constexpr double radius = 0.5;
-constexpr double length = 1.0;
-constexpr double feedFraction = 0.1;
-constexpr double feedSpeed = 0.05; // m/s
-constexpr double airSpeed = 0.5;   // m/s
-
-KilnDomain kiln() {
-  KilnDomain d;
-  d.shell.radius = radius;
-  d.shell.omega = 3.0 * 2.0 * pi / 60.0;
-  d.shell.zInlet = 0.0;
-  d.shell.zOutlet = length;
-  const double phiMax = test::drumParameters().rheology.phiMax;
-  d.inlet = makeKilnInlet(d.shell, feedFraction, 0.35, feedSpeed, airSpeed, phiMax, "test");
-  return d;
-}
-
-// 14 x 14 cells across the kiln, 8 along it.
-Grid kilnGrid() {
-  const double width = 2.2 * radius;
-  return makeGrid(14, 14, 8, width, width, length, -0.5 * width, -0.5 * width, 0.0);
-}
-
-CutCellOptions closedZ() {
-  CutCellOptions o;
-  o.periodic[2] = false;
-  return o;
-}
-
-OpenSides feedAndDischarge() {
-  OpenSides s;
-  s.kind[ZLow] = BoundaryKind::Inflow;
-  s.kind[ZHigh] = BoundaryKind::Outflow;
-  return s;
-}
 
 TEST(TEST_CATEGORY, kiln_open_ends_balance_solids_and_volume) {
   const Grid grid = kilnGrid();
@@ -236,12 +198,6 @@ TEST(TEST_CATEGORY, kiln_open_ends_refuse_bad_setups) {
   EXPECT_NE(message([&] {
               solver_type(space{}, grid, domain, params, closedZ(), sideways);
             }).find("only the z ends"),
-            std::string::npos);
-  TwoPhaseParameters hot = params;
-  hot.energy = true;
-  EXPECT_NE(message([&] {
-              solver_type(space{}, grid, domain, hot, closedZ(), feedAndDischarge());
-            }).find("energy equation"),
             std::string::npos);
   solver_type solver(space{}, grid, domain, params, closedZ(), feedAndDischarge());
   KilnInlet tooDense = domain.inlet;

@@ -5,7 +5,11 @@
 #     throughput, solids came in and went out, the dam took some, phi stayed in [0, phi_max];
 # (2) timeseries.csv has the initial row and one per output, its hold-up matches the balance;
 # (3) the 3D fields are in the HDF5 outputs and fields.xmf, with the shape [nz][ny][nx];
-# (4) bad input: overlapping inlet patches are refused naming the rule.
+# (4) bad input: overlapping inlet patches are refused naming the rule;
+# (5) the hot-shell case beside CASE (kiln-15m-hot-shell.yaml), as coarse, 0.4 s, a 0.1 s tracer
+#     pulse: the heat balance (in - out + shell - accumulation) closes to 1e-10 of the heat
+#     exchanged, the shell heated the bed, the tracer taken in is the solids fed during the pulse,
+#     the temperature and tracer fields are in the HDF5 outputs.
 # Usage: kiln_short.sh HIKILN CASE WORKDIR
 set -euo pipefail
 hikiln=$1 case=$2 work=$3
@@ -49,4 +53,31 @@ if "$hikiln" -q kiln "$case" -o "$work/bad" --set feed.area_fraction=0.7 2> "$wo
   echo "kiln_short: overlapping patches were accepted"; exit 1
 fi
 grep -q "feed and air patches not overlapping" "$work/bad.err" || { cat "$work/bad.err"; exit 1; }
+hot="$(dirname "$case")/kiln-15m-hot-shell.yaml"
+"$hikiln" -q --threads 1 kiln "$hot" -o "$work/hot" --set grid.cells_across=12 \
+  --set grid.cells_along=6 --set time.duration=0.4 --set time.output_interval=0.2 \
+  --set "time.snapshots=[]" --set tracer.pulse_duration=0.1
+/usr/bin/python3 - "$work/hot" <<'PY'
+import csv, json, sys, h5py
+run = sys.argv[1]
+s = json.load(open(f"{run}/summary.json"))
+h, t = s["heat"], s["tracer"]
+def check(ok, what):
+    if not ok:
+        sys.exit(f"kiln_short (hot shell): {what} (summary: {json.dumps(s, indent=1)})")
+check(h["balance_error_of_exchanged"] < 1e-10, "the heat balance does not close to 1e-10")
+check(h["balance_error_worst_step_of_exchanged"] < 1e-8, "a step's heat balance is off")
+check(h["from_shell_J"] > 0 and h["in_J"] > 0 and h["out_J"] > 0, "no heat from the shell / ends")
+check(300 < h["bed_mean_temperature_K"] < 1000, "the bed was not heated, or overheated")
+rows = list(csv.DictReader(open(f"{run}/timeseries.csv")))
+fed = [float(r["solids_in_m3"]) for r in rows]  # at 0, 0.2, 0.4 s; the feed is steady
+check(abs(t["injected_m3"] - fed[1] / 2) <= 1e-6 * fed[1], f"tracer in {t['injected_m3']} vs fed {fed}")
+with h5py.File(f"{run}/fields_0002.h5", "r") as f:
+    T = f["fields/temperature"][()]
+    check(T.shape == (6, 12, 12) and T.min() >= 300 - 1e-9 and T.max() <= 1000 + 1e-9,
+          f"temperature field {T.shape} [{T.min()}, {T.max()}]")
+    check("tracer" in f["fields"], "no tracer field")
+print("kiln_short (hot shell): heat balance", h["balance_error_of_exchanged"], "of the exchanged;",
+      "from the shell", h["from_shell_J"], "J; bed mean", h["bed_mean_temperature_K"], "K")
+PY
 echo "kiln_short: passed"
