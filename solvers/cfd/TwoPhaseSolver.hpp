@@ -378,8 +378,6 @@ public:
       const HeatStep h = energyStep(dt, tracer.temperature, tracer.thermal, tracer.inflow);
       tracer.lastIn = h.in;
       tracer.lastOut = h.out;
-      tracer.totalIn += h.in;
-      tracer.totalOut += h.out;
     }
     updateDensity();
     updateViscosity();
@@ -461,12 +459,10 @@ public:
   }
   /// \brief What flows in with tracer n through the Inflow sides (from the next step on).
   void setTracerInflow(int n, InflowTemperature const& t) { _tracers.at(n).inflow = t; }
-  /// \brief Tracer n's content carried in and out through the open ends in the last step and
-  /// since the start (tracerHeat() units).
+  /// \brief Tracer n's content carried in and out through the open ends in the last step
+  /// (tracerHeat() units).
   double tracerInLastStep(int n) const { return _tracers.at(n).lastIn; }
   double tracerOutLastStep(int n) const { return _tracers.at(n).lastOut; }
-  double tracerInTotal(int n) const { return _tracers.at(n).totalIn; }
-  double tracerOutTotal(int n) const { return _tracers.at(n).totalOut; }
 
   /// \brief Solids content sum(capacity x phi) (x cell volume = m^3).
   double solids() { return solidsContent(_space, _cut, _phi); }
@@ -817,7 +813,7 @@ private:
     field_type temperature;
     ThermalParameters thermal;
     InflowTemperature inflow;
-    double lastIn = 0.0, lastOut = 0.0, totalIn = 0.0, totalOut = 0.0;
+    double lastIn = 0.0, lastOut = 0.0;
   };
   std::vector<TemperatureTracer> _tracers;
   field_type _inflowW, _inflowPhi, _gasHead; ///< open ends only
