@@ -26,7 +26,7 @@ void writeCellFieldOutput(std::filesystem::path const& out, int index, double ti
       {"volume_fraction", "1"},  {"pressure", "Pa"},     {"bed_pressure", "Pa"},
       {"viscosity", "Pa s"},     {"strain_rate", "1/s"}, {"density", "kg/m^3"},
       {"capacity", "1"},         {"temperature", "K"},   {"shear_stress", "Pa"},
-      {"axial_velocity", "m/s"}, {"tracer", "1"}};
+      {"axial_velocity", "m/s"}, {"tracer", "1"},        {"fluid_volume", "1"}};
   io::XdmfGridStep step;
   step.time = time;
   step.h5File = (out / name).string();

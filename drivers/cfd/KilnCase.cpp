@@ -101,6 +101,14 @@ cases::CaseSchema buildSchema() {
       .nonNegative()
       .defaultsTo("0")
       .doc("Length of the tracer pulse; 0: no tracer");
+  s.real("kramers.average_from")
+      .unit("s")
+      .nonNegative()
+      .defaultsTo("0")
+      .doc("Start of the steady-state window: from then on each output's bed depth and surface "
+           "angle per cross-section are averaged, and the mean depth profile is compared with "
+           "Kramers-Croockewit at the end (kramers_croockewit.csv, summary.json); 0: no "
+           "comparison");
   s.real("time.duration").unit("s").positive().defaultsTo("49").doc("Simulated time");
   s.real("time.output_interval")
       .unit("s")
@@ -133,6 +141,10 @@ cases::CaseSchema buildSchema() {
               return c.real("tracer.pulse_duration") == 0.0 ||
                      c.real("tracer.pulse_start") + c.real("tracer.pulse_duration") <
                          c.real("time.duration");
+            });
+  s.require("kramers.average_from before the end of the run (average_from < duration)",
+            [](const cases::CaseFile& c) {
+              return c.real("kramers.average_from") < c.real("time.duration");
             });
   return s;
 }
@@ -179,6 +191,7 @@ KilnSettings kilnSettingsFromCase(const cases::CaseFile& c) {
   p.thermal.wallGasTransfer = c.real("heat.wall_gas_transfer");
   s.tracerStart = c.real("tracer.pulse_start");
   s.tracerDuration = c.real("tracer.pulse_duration");
+  s.kramersFrom = c.real("kramers.average_from");
   p.validate();
   return s;
 }

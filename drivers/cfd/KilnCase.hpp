@@ -37,6 +37,7 @@ struct KilnSettings {
   double airTemperature = 300.0;     ///< K, the air blown in
   double tracerStart = 0.0;          ///< s, the residence-time pulse in the feed starts
   double tracerDuration = 0.0;       ///< s; 0: no tracer
+  double kramersFrom = 0.0;          ///< s: steady-state window start; 0: no comparison
   std::string rheologySource;
   TwoPhaseParameters params;
   double omega() const { return rpm * 2.0 * constants::pi / 60.0; }

@@ -14,6 +14,8 @@ case.resolved.yaml) and writes:
   colour and the in-plane velocity (axial, vertical) as arrows;
 - kiln_bed_depth.csv / .png: the axial bed-depth profile of each snapshot, the depth of a flat
   bed holding each cross-section's solids (phi_max: the largest phi at the start);
+- with kramers.average_from set: kiln_kramers.png, the steady-state mean bed depth along the
+  kiln against Kramers-Croockewit (kramers_croockewit.csv and summary.json of the run);
 - with the energy equation on (heat.enabled): kiln_heat.png, the bed's mean temperature and the
   heat balance error against time, and kiln_bed_temperature.csv / .png, the bed's mean
   temperature per cross-section (solids-weighted) along the kiln at each snapshot.
@@ -25,6 +27,7 @@ Written for Debian's python3 with python3-matplotlib, -numpy, -h5py and -skimage
 import argparse
 import csv
 import glob
+import json
 import os
 import re
 import sys
@@ -108,8 +111,11 @@ def segment_depth(area, radius):
 
 
 def bed_depth(fields, spacing, phi_max, radius):
-    """Per cross-section (along z): the depth of a flat bed holding its solids."""
-    solids = (fields["volume_fraction"] * fields["capacity"]).sum(axis=(1, 2))
+    """Per cross-section (along z): the depth of a flat bed of its bed area. The area counts the
+    cells' true open volume (fluid_volume; older runs: the capacity, which the shell's cut cells
+    raise to half a cell), as hikiln's own bed profile does (drivers/cfd/KilnBedProfile.cpp)."""
+    volume = fields.get("fluid_volume", fields["capacity"])
+    solids = (fields["volume_fraction"] * volume).sum(axis=(1, 2))
     area = solids * spacing[0] * spacing[1] / phi_max
     return np.array([segment_depth(a, radius) for a in area])
 
@@ -178,6 +184,39 @@ def draw_surface(ax, tris, colour, norm, cmap, extent, title):
     ax.set_ylabel("x (m)")
     ax.set_zlabel("y (m)")
     ax.set_title(title)
+
+
+def plot_kramers(run, out):
+    """kiln_kramers.png from the run's kramers_croockewit.csv (nothing without one)."""
+    path = os.path.join(run, "kramers_croockewit.csv")
+    if not os.path.exists(path):
+        return
+    with open(os.path.join(run, "summary.json")) as f:
+        kc = json.load(f).get("kramers_croockewit", {})
+    if kc.get("max_rel_deviation") is None:  # a csv left by an earlier run of the directory
+        return
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    d = np.array([float(r["distance_from_discharge_m"]) for r in rows])
+    fig, ax = plt.subplots(figsize=(7, 4), layout="constrained")
+    depth = np.array([float(r["depth_m"]) for r in rows])
+    counted = np.array([r["compared"] == "1" for r in rows])
+    ax.plot(d[counted], depth[counted], "o", color="C0", label="hikiln (steady-state mean)")
+    ax.plot(d[~counted], depth[~counted], "o", mfc="none", color="C0",
+            label="hikiln, not compared (start, inlet)")
+    ax.plot(d, [float(r["depth_kramers_m"]) for r in rows], "-", color="C1",
+            label=f"Kramers-Croockewit, beta = {kc['repose_angle_deg']:.1f} deg (measured)")
+    if kc.get("uniform_depth_m") is not None:
+        ax.axhline(kc["uniform_depth_m"], ls=":", color="grey", label="uniform depth")
+    ax.set_xlabel("distance from the discharge end (m)")
+    ax.set_ylabel("bed depth (m)")
+    ax.set_ylim(bottom=0.0)
+    window = kc["window_s"]
+    ax.set_title(f"Bed depth at steady state, t = {window[0]:g}-{window[1]:g} s: largest "
+                 f"deviation {100 * kc['max_rel_deviation']:.1f} %", fontsize=10)
+    ax.legend(fontsize=8)
+    fig.savefig(os.path.join(out, "kiln_kramers.png"), dpi=120)
+    plt.close(fig)
 
 
 def main():
@@ -281,6 +320,8 @@ def main():
                        [bed_temperature(fields) for _, fields, _, _ in surfaces], "bed_T_K",
                        "bed mean temperature (K)",
                        "Bed temperature along the kiln (solids-weighted, per cross-section)")
+
+    plot_kramers(args.run, args.out)
 
     fig, axes = plt.subplots(len(surfaces), 1, figsize=(1.8 + 1.5 * ratio, 1.9 * len(surfaces)),
                              squeeze=False, layout="constrained")

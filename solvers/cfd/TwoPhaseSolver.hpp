@@ -440,7 +440,10 @@ public:
   /// \brief Adds a passive tracer with its own thermal parameters. A solids tracer (e.g. a
   /// residence-time pulse in a kiln's feed) has gasHeatCapacity = 0 and nothing that conducts
   /// (ThermalParameters::conducts()): it is then advected with the solids only, and its content
-  /// (tracerHeat) is solids volume x solidHeatCapacity x concentration.
+  /// (tracerHeat) is solids volume x solidHeatCapacity x concentration. Give it a trace of gas
+  /// heat capacity wherever cells may run empty of solids: a cell with no heat capacity has no
+  /// defined concentration, and solids passing through it within a step would be tagged from
+  /// nothing (the limiter then breaks the conservation; see KilnRun.cpp).
   int addTemperatureTracer(ThermalParameters const& thermal) {
     TemperatureTracer tracer;
     tracer.thermal = thermal;
