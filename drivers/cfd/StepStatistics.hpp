@@ -31,6 +31,8 @@ struct StepStatistics {
   std::int64_t steps = 0;
   std::int64_t viscousIterations = 0;
   std::int64_t pressureIterations = 0;
+  double viscousSeconds = 0.0;  ///< in the momentum solves (hierarchy set-up included)
+  double pressureSeconds = 0.0; ///< in the pressure solves (likewise)
   double minDt = std::numeric_limits<double>::infinity();
   double maxDt = 0.0;
   double maxDivergence = 0.0;
@@ -45,10 +47,13 @@ struct StepStatistics {
     maxDivergence = std::max(maxDivergence, r.maxDivergence);
     viscousIterations += r.viscous.iterations;
     pressureIterations += r.pressure.iterations;
+    viscousSeconds += r.viscous.seconds;
+    pressureSeconds += r.pressure.seconds;
   }
 
   /// \brief Writes steps, dt_min, dt_max, dt_limited_by, max_divergence, the mean iterations,
-  /// seconds_per_step and cell_updates_per_second (loopSeconds of stepping over `cells`).
+  /// seconds_per_step, the share of it in the momentum and pressure solves, and
+  /// cell_updates_per_second (loopSeconds of stepping over `cells`).
   void writeTo(nlohmann::json& summary, double loopSeconds, std::int64_t cells) const {
     const double n = static_cast<double>(steps);
     summary["steps"] = steps;
@@ -59,6 +64,8 @@ struct StepStatistics {
     summary["mean_viscous_iterations"] = steps > 0 ? double(viscousIterations) / n : 0.0;
     summary["mean_pressure_iterations"] = steps > 0 ? double(pressureIterations) / n : 0.0;
     summary["seconds_per_step"] = steps > 0 ? loopSeconds / n : 0.0;
+    summary["share_in_momentum_solves"] = loopSeconds > 0.0 ? viscousSeconds / loopSeconds : 0.0;
+    summary["share_in_pressure_solves"] = loopSeconds > 0.0 ? pressureSeconds / loopSeconds : 0.0;
     summary["cell_updates_per_second"] = loopSeconds > 0.0 ? double(cells) * n / loopSeconds : 0.0;
   }
 };

@@ -42,6 +42,7 @@ struct SolveStats {
   double initialResidual = 0.0; ///< ||f - A x_0||
   double finalResidual = 0.0;   ///< true residual at the end (recomputed, not the recursion)
   std::vector<double> history;  ///< residual before the first and after every iteration
+  double seconds = 0.0; ///< wall time of the solve with its set-up, where the caller timed it
 
   /// \brief Geometric mean of the residual reduction per iteration.
   double meanReduction() const {
