@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 
 namespace hikiln::cfd {
 
@@ -61,6 +62,15 @@ void addTwoPhaseKeys(cases::CaseSchema& s) {
       .defaultsTo("0.5")
       .doc("Largest outflow per step over a cell's capacity");
   s.real("numerics.dt_max").unit("s").positive().defaultsTo("0.01").doc("Largest time step");
+  const char* const solves[][3] = {{"momentum", "1e-9", "momentum (viscous)"},
+                                   {"pressure", "1e-11", "pressure"}};
+  for (auto const& solve : solves) {
+    s.real(std::string("numerics.") + solve[0] + "_tolerance")
+        .unit("1")
+        .range(0, 0.1, Bounds::OpenMin)
+        .defaultsTo(solve[1])
+        .doc(std::string("The ") + solve[2] + " solve stops at this residual over its initial one");
+  }
   s.require("viscosity_max above the gas viscosity", [](const cases::CaseFile& c) {
     return c.real("rheology.viscosity_max") > c.real("gas.viscosity");
   });
@@ -72,6 +82,8 @@ std::string readTwoPhaseKeys(const cases::CaseFile& c, TwoPhaseParameters& p) {
   p.settlingVelocity = c.real("material.settling_velocity");
   p.cfl = c.real("numerics.cfl");
   p.dtMax = c.real("numerics.dt_max");
+  p.viscousTolerance = c.real("numerics.momentum_tolerance");
+  p.pressureTolerance = c.real("numerics.pressure_tolerance");
   GranularRheology& r = p.rheology;
   r.phiMax = c.real("material.phi_max");
   r.gasViscosity = c.real("gas.viscosity");

@@ -97,7 +97,6 @@ void strainRateInvariant(ExecutionSpace const& space, Grid const& grid,
                          VelocityFields<MemorySpace> const& open = VelocityFields<MemorySpace>()) {
   const int dims = grid.is3D() ? 3 : 2;
   const int off[3] = {grid.ghost, grid.ghost, grid.ghostZ()};
-  const int n[3] = {grid.nx, grid.ny, grid.nz};
   const auto u0 = u.comp[0], u1 = u.comp[1], u2 = dims == 3 ? u.comp[2] : u.comp[0];
   const bool masked = open.comp[0].extent(0) > 0;
   const auto a0 = open.comp[0], a1 = open.comp[1], a2 = dims == 3 ? open.comp[2] : open.comp[0];
@@ -110,18 +109,9 @@ void strainRateInvariant(ExecutionSpace const& space, Grid const& grid,
         const auto at = [&](int c, int const(&p)[3]) {
           return comp(c)(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
         };
-        // face of component c at p is open (always without apertures; ghost faces count as open)
+        // face of component c at p is open (always without apertures)
         const auto isOpen = [&](int c, int const(&p)[3]) {
-          if (!masked) {
-            return true;
-          }
-          for (int e = 0; e < dims; ++e) {
-            if (p[e] < 0 || p[e] >= n[e] + (e == c)) {
-              return true;
-            }
-          }
-          const auto& ap = c == 0 ? a0 : (c == 1 ? a1 : a2);
-          return ap(p[0] + off[0], p[1] + off[1], p[2] + off[2]) > 0.0;
+          return !masked || !shellHeldFace(c == 0 ? a0 : (c == 1 ? a1 : a2), grid, c, p);
         };
         double d[3][3] = {};
         for (int a = 0; a < dims; ++a) {

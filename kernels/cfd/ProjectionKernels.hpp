@@ -152,9 +152,8 @@ void momentumPredictor(ExecutionSpace const& space, CutCells<MemorySpace> const&
             // with the Coulomb wall a closed (shell-held) face upwind carries no momentum in
             // (zero gradient): the shell acts on the fluid only through the capped forcing.
             // Ghost faces (apertures not stored) keep their boundary-filled values.
-            const int along = q[b] - off[b];
-            const bool inside = along >= 0 && along < grid.cells(b) + (b == c);
-            const bool shellHeld = friction.enabled && inside && ap(q[0], q[1], q[2]) <= 0.0;
+            const int upwind[3] = {q[0] - off[0], q[1] - off[1], q[2] - off[2]};
+            const bool shellHeld = friction.enabled && shellHeldFace(ap, grid, c, upwind);
             const double neighbour = shellHeld ? here : uc(q[0], q[1], q[2]);
             advection += vb * (vb >= 0.0 ? here - neighbour : neighbour - here) / grid.spacing(b);
           }

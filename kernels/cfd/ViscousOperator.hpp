@@ -47,6 +47,21 @@ KOKKOS_INLINE_FUNCTION constexpr Staggering edgeStaggering(int slot) {
   return slot == 0 ? Staggering::EdgeXY : (slot == 1 ? Staggering::EdgeXZ : Staggering::EdgeYZ);
 }
 
+/// \brief True when the face of component c at p (face indices without the ghost offset) lies
+/// in the grid and is closed (aperture <= 0: held at the shell's velocity). Ghost faces, beyond
+/// a side of the grid, hold that side's boundary values and count as open.
+template <class ApertureView>
+KOKKOS_INLINE_FUNCTION bool shellHeldFace(ApertureView const& aperture, Grid const& grid, int c,
+                                          int const (&p)[3]) {
+  const int n[3] = {grid.nx, grid.ny, grid.nz};
+  for (int e = 0; e < (grid.is3D() ? 3 : 2); ++e) {
+    if (p[e] < 0 || p[e] >= n[e] + (e == c ? 1 : 0)) {
+      return false;
+    }
+  }
+  return aperture(p[0] + grid.ghost, p[1] + grid.ghost, p[2] + grid.ghostZ()) <= 0.0;
+}
+
 /// \brief The operator alpha u - div(mu (grad u + grad u^T)) with its boundary closures
 /// (axis[component][axis]).
 template <class MemorySpace> struct ViscousOperator {
