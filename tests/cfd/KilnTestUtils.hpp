@@ -26,10 +26,10 @@ inline KilnDomain kiln() {
   return d;
 }
 
-// 14 x 14 cells across the kiln, nz along it.
-inline Grid kilnGrid(int nz = 8) {
+// `across` x `across` cells across the kiln (14: the feed patch resolved), nz along it.
+inline Grid kilnGrid(int nz = 8, int across = 14) {
   const double width = 2.2 * radius;
-  return makeGrid(14, 14, nz, width, width, length, -0.5 * width, -0.5 * width, 0.0);
+  return makeGrid(across, across, nz, width, width, length, -0.5 * width, -0.5 * width, 0.0);
 }
 
 inline CutCellOptions closedZ() {

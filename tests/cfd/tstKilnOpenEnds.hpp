@@ -11,6 +11,9 @@
 // - A dam ring put in during the run (the cut cells measured again) keeps the balance, counting
 //   the solids where the ring now stands as taken by it, and phi bounded.
 // - This backend (any thread count) agrees with Kokkos::Serial to the solvers' tolerance.
+// - The pressure solve's iterations do not grow with the grid (16, 32 and 48 cells across, the
+//   cells' shape kept): the solid cells outside the shell must not act as a sink in the coarse
+//   levels of the multigrid (TwoPhaseSolver::project).
 // - Bad set-ups are refused with the reason.
 #include "CfdTestUtils.hpp"
 #include "KilnTestUtils.hpp"
@@ -173,6 +176,30 @@ TEST(TEST_CATEGORY, kiln_open_ends_backend_agrees_with_serial) {
   for (int f = 1; f < 4; ++f) {
     EXPECT_LT(worst[f], 1e-7 * scale[3]) << "velocity component " << f - 1;
   }
+}
+
+TEST(TEST_CATEGORY, kiln_pressure_iterations_do_not_grow_with_the_grid) {
+  const KilnDomain domain = kiln();
+  const TwoPhaseParameters params = test::drumParameters();
+  std::vector<double> iterations;
+  for (const int across : {16, 32, 48}) {
+    const Grid grid = kilnGrid(across / 2, across);
+    solver_type solver(space{}, grid, domain, params, closedZ(), feedAndDischarge());
+    solver.setFlatBed(-0.5 * radius);
+    solver.setInflow(domain.inlet);
+    double sum = 0.0;
+    const int steps = 4;
+    for (int n = 0; n < steps; ++n) {
+      const TwoPhaseStepReport r = solver.advance();
+      ASSERT_TRUE(r.pressure.converged) << across << " cells across, step " << n;
+      sum += r.pressure.iterations;
+    }
+    iterations.push_back(sum / steps);
+    std::cout << "kiln " << across << " x " << across << " x " << grid.nz
+              << ": mean pressure iterations " << iterations.back() << "\n";
+  }
+  const auto [least, most] = std::minmax_element(iterations.begin(), iterations.end());
+  EXPECT_LE(*most - *least, 2.0) << "pressure iterations grow with the grid";
 }
 
 TEST(TEST_CATEGORY, kiln_open_ends_refuse_bad_setups) {
