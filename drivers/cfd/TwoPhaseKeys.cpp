@@ -60,7 +60,8 @@ void addTwoPhaseKeys(cases::CaseSchema& s) {
       .unit("1")
       .range(0, 1, Bounds::OpenMin)
       .defaultsTo("0.5")
-      .doc("Largest outflow per step over a cell's capacity");
+      .doc("Largest advective outflow per step over a cell's capacity (the solids transport "
+           "sub-steps for the settling)");
   s.real("numerics.dt_max").unit("s").positive().defaultsTo("0.01").doc("Largest time step");
   const char* const solves[][3] = {{"momentum", "1e-9", "momentum (viscous)"},
                                    {"pressure", "1e-11", "pressure"}};

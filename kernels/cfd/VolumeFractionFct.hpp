@@ -30,6 +30,10 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
 namespace hikiln::cfd {
 
 /// \brief Scratch fields of the FCT step.
@@ -37,6 +41,7 @@ template <class MemorySpace> struct FctWork {
   Field<MemorySpace> low[3];  ///< low-order face fluxes (per unit cell volume)
   Field<MemorySpace> anti[3]; ///< antidiffusive face fluxes, then the limited ones
   Field<MemorySpace> phiLow, rPlus, rMinus;
+  Field<MemorySpace> total[3]; ///< a sub-stepped step's summed fluxes (allocated when needed)
 };
 
 /// \brief Allocates the FCT scratch fields on grid.
@@ -275,6 +280,79 @@ void transportVolumeFraction(ExecutionSpace const& space, CutCells<MemorySpace> 
         phi(I, J, K) =
             v > 0.0 ? phiLow(I, J, K) - detail::netOutflow(a0, a1, a2, dims, I, J, K) / v : 0.0;
       });
+}
+
+namespace detail {
+
+/// \brief total[a] = (start ? 0 : total[a]) + low[a] + anti[a] on the faces normal to each axis.
+template <class ExecutionSpace, class MemorySpace>
+void accumulateFctFluxes(ExecutionSpace const& space, Grid const& grid, FctWork<MemorySpace>& w,
+                         bool start) {
+  const int dims = grid.is3D() ? 3 : 2;
+  const int g = grid.ghost, gz = grid.ghostZ();
+  for (int a = 0; a < dims; ++a) {
+    if (w.total[a].extent(0) == 0) {
+      w.total[a] = makeField(space, grid, faceStaggering(a), "hikiln::cfd::fct::total");
+    }
+    const auto total = w.total[a], low = w.low[a], anti = w.anti[a];
+    const int hi[3] = {grid.nx + (a == 0), grid.ny + (a == 1), grid.nz + (a == 2)};
+    Kokkos::parallel_for(
+        "hikiln::cfd::accumulateFctFluxes", gridPolicy(space, {0, 0, 0}, hi),
+        KOKKOS_LAMBDA(const int i, const int j, const int k) {
+          const int I = i + g, J = j + g, K = k + gz;
+          total(I, J, K) = (start ? 0.0 : total(I, J, K)) + low(I, J, K) + anti(I, J, K);
+        });
+  }
+}
+
+} // namespace detail
+
+/// \brief Most sub-steps transportVolumeFractionInSubsteps() takes before it gives up.
+inline constexpr int maxTransportSubsteps = 1000;
+
+/// \brief Advances phi over dt in m equal sub-steps of transportVolumeFraction() on the same
+/// face velocities, m the fewest that keep each within cfl / maxCourantRate() (advection and
+/// settling); returns m. Why: the step dt is set by the advection alone (what the momentum
+/// needs), while the explicit settling flux keeps phi bounded only for steps up to about
+/// cfl x capacity x h / |w| less the advection's share, which in the 2D drums at 128 x 128 was
+/// half the advective step or less; the transport is cheap next to the momentum and pressure
+/// solves, so it is the part that sub-steps. (A count from a rate that counts the settling only
+/// where a cell's phi lets it break a bound saved a few sub-steps but made m jump with
+/// round-off-sized differences of phi: a 3D drum one cell column deep per layer then left its 2D
+/// twin by 3e-5 in phi.) One sub-step leaves w as transportVolumeFraction() does; with more, w.low
+/// holds the step's summed limited fluxes and w.anti zero, which is what the heat advection and
+/// boundarySolidsFlux() read (the step's total solids flux per face, whose net outflow is phi's
+/// whole change). Throws std::runtime_error past maxTransportSubsteps.
+template <class ExecutionSpace, class MemorySpace>
+int transportVolumeFractionInSubsteps(ExecutionSpace const& space, CutCells<MemorySpace> const& cc,
+                                      VelocityFields<MemorySpace> const& u,
+                                      double const (&settling)[3], double dt, double phiMax,
+                                      double cfl, Field<MemorySpace> const& phi,
+                                      FctWork<MemorySpace>& w) {
+  const double rate = maxCourantRate(space, cc, u, settling);
+  // the fewest sub-steps, forgiving a step that exceeds the bound by round-off only
+  const double needed = rate > 0.0 ? dt * rate / cfl * (1.0 - 1e-12) : 1.0;
+  if (!(needed <= maxTransportSubsteps)) {
+    throw std::runtime_error("hikiln::cfd::transportVolumeFractionInSubsteps: more than " +
+                             std::to_string(maxTransportSubsteps) +
+                             " sub-steps for one step (settling velocity too large for the "
+                             "grid, or a non-finite velocity)");
+  }
+  const int substeps = needed > 1.0 ? static_cast<int>(std::ceil(needed)) : 1;
+  const double h = dt / substeps;
+  for (int s = 0; s < substeps; ++s) {
+    transportVolumeFraction(space, cc, u, settling, h, phiMax, phi, w);
+    if (substeps > 1) {
+      detail::accumulateFctFluxes(space, cc.grid, w, s == 0);
+    }
+  }
+  if (substeps > 1) {
+    for (int a = 0; a < (cc.grid.is3D() ? 3 : 2); ++a) {
+      Kokkos::deep_copy(space, w.low[a], w.total[a]);
+      Kokkos::deep_copy(space, w.anti[a], 0.0);
+    }
+  }
+  return substeps;
 }
 
 /// \brief The solids carried through the boundary faces of `side` (2 axis + 0 low / 1 high) by

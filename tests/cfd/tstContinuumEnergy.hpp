@@ -163,13 +163,15 @@ TEST(TEST_CATEGORY, temperature_tracers_follow_the_energy_equation) {
   std::cout << "tracers: same-diffusivity difference " << differ << " K; fast tracer worst heat "
             << "change per step " << worst << ", total "
             << std::fabs(solver.tracerHeat(faster) - heat0) / heat0 << "; bed spread " << spread
-            << " K vs " << spreadFast << " K\n";
+            << " K vs " << spreadFast << " K after " << solver.time() << " s\n";
   EXPECT_EQ(differ, 0.0);
   EXPECT_LT(worst, 1e-12); // measured 7e-15
   EXPECT_LT(spreadFast, 0.95 * spread);
-  // little numerical diffusion: the limited face reconstruction keeps 192 of the initial 200 K
-  // rms here; first-order upwind advection kept 189.5 (measured)
-  EXPECT_GT(spread, 0.955 * 0.5 * (hot - cold));
+  // little numerical diffusion: the limited face reconstruction keeps 190.6 of the initial
+  // 200 K rms in these 0.4 s; first-order upwind advection keeps 187.3 (both measured
+  // 2026-12-03; 192 and 189.5 before the settling sub-steps, whose shorter steps covered less
+  // time)
+  EXPECT_GT(spread, 0.945 * 0.5 * (hot - cold));
 }
 
 } // namespace
