@@ -318,7 +318,7 @@ inline constexpr int maxTransportSubsteps = 1000;
 /// half the advective step or less; the transport is cheap next to the momentum and pressure
 /// solves, so it is the part that sub-steps. (A count from a rate that counts the settling only
 /// where a cell's phi lets it break a bound saved a few sub-steps but made m jump with
-/// round-off-sized differences of phi: a 3D drum one cell column deep per layer then left its 2D
+/// round-off-sized differences of phi: a 3D drum of four periodic layers then left its 2D
 /// twin by 3e-5 in phi.) One sub-step leaves w as transportVolumeFraction() does; with more, w.low
 /// holds the step's summed limited fluxes and w.anti zero, which is what the heat advection and
 /// boundarySolidsFlux() read (the step's total solids flux per face, whose net outflow is phi's
