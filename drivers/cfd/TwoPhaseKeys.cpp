@@ -63,6 +63,11 @@ void addTwoPhaseKeys(cases::CaseSchema& s) {
       .doc("Largest advective outflow per step over a cell's capacity (the solids transport "
            "sub-steps for the settling)");
   s.real("numerics.dt_max").unit("s").positive().defaultsTo("0.01").doc("Largest time step");
+  s.choice("numerics.projection", {"incremental", "plain"})
+      .defaultsTo("incremental")
+      .doc("incremental: the momentum predictor carries the last step's gravity and pressure "
+           "acceleration, so a steady state does not depend on dt; plain: without it (a steady "
+           "state then depends on dt; kept for comparison)");
   const char* const solves[][3] = {{"momentum", "1e-9", "momentum (viscous)"},
                                    {"pressure", "1e-11", "pressure"}};
   for (auto const& solve : solves) {
@@ -83,6 +88,7 @@ std::string readTwoPhaseKeys(const cases::CaseFile& c, TwoPhaseParameters& p) {
   p.settlingVelocity = c.real("material.settling_velocity");
   p.cfl = c.real("numerics.cfl");
   p.dtMax = c.real("numerics.dt_max");
+  p.incrementalProjection = c.string("numerics.projection") == "incremental";
   p.viscousTolerance = c.real("numerics.momentum_tolerance");
   p.pressureTolerance = c.real("numerics.pressure_tolerance");
   GranularRheology& r = p.rheology;

@@ -14,19 +14,23 @@
 ///    the hydrostatic gas pressure, ProjectionKernels.hpp: gauge-free, 0 at the bed surface),
 ///    mu = muGas + phi / phiMax eta(p_bed, gamma_dot) (GranularRheology.hpp; Coulomb wall layer).
 /// 4. Momentum predictor, viscous terms implicit (ViscousMultigrid, PCG):
-///    rho (u* - u^n) / dt = -rho (u^n . grad) u^n + div(mu (grad u* + grad u*^T))
+///    rho (u* - u^n) / dt = -rho (u^n . grad) u^n + div(mu (grad u* + grad u*^T)) + rho a^n
 ///    + Brinkman forcing to the shell velocity on faces that are not fully open.
 ///    Bed viscosities of 1e3-1e5 Pa s therefore do not limit dt. With the Coulomb wall, the
 ///    viscous stresses (and in step 3 the strain rates) that read a closed face are left out
 ///    (ViscousOperator.hpp): the shell pulls on the bed only through the capped forcing on the
-///    cut faces, mu_wall sigma_n.
-/// 5. Projection (CellMultigrid, PCG) for the full pressure with gravity
-///    (non-incremental, balanced force): u** = u* + dt g, div(a / rho grad p) = div(a u**) / dt
-///    with a the face apertures, u^{n+1} = u** - dt / rho grad p on open faces. Gravity and the
-///    pressure gradient meet on the same faces with the same (new) face density, so a layered
-///    bed at rest stays exactly at rest; an incremental form (grad p^n in the predictor) was
-///    tried and abandoned: p^n balances the old density, and on a face that the bed has just
-///    left grad p^n / rho_gas accelerated the gas to metres per second. The aperture-weighted
+///    cut faces, mu_wall sigma_n. a^n (incremental projection, CarriedAcceleration.hpp) is what
+///    gravity and the pressure gradient did to each face's velocity in the last step; then
+///    u_hat = u* - dt a^n. Without it (`incrementalProjection` off, kept for comparison) the
+///    stresses act on a velocity that lacks the pressure gradient, and the steady state depends
+///    on dt: a 2D drum's wall slip moved by 6 points between dt 0.02 and 0.005 s (docs/compare.md).
+/// 5. Projection (CellMultigrid, PCG) for the full pressure with gravity (balanced force):
+///    u** = u_hat + dt g, div(a / rho grad p) = div(a u**) / dt with a the face apertures,
+///    u^{n+1} = u** - dt / rho grad p on open faces, a^{n+1} = (u^{n+1} - u_hat) / dt. Gravity
+///    and the pressure gradient meet on the same faces with the same (new) face density, so a
+///    layered bed at rest stays exactly at rest. (Carrying grad p^n into the predictor instead
+///    was tried and abandoned: p^n balances the old density, and on a face that the bed has just
+///    left grad p^n / rho_gas accelerated the gas to metres per second.) The aperture-weighted
 ///    divergence of u^{n+1} is zero to the solver tolerance.
 /// 6. Energy (optional, EnergyKernels.hpp): the heat content rides on step 1's fluxes, then an
 ///    implicit diffusion with the effective bed diffusivity and a hot shell's transfer
@@ -34,13 +38,14 @@
 ///    setInflowTemperature) and out with the flow only.
 /// dt is the largest step whose advective outflow from every cell is at most `cfl` of its fluid
 /// volume, capped by dtMax; the reason is returned with the step. (Counting the settling in dt
-/// too, as before 2026-12-03, took twice the steps in the 2D drums at 128 x 128.)
+/// too, as the code did before, took 2.4-3.1 times the steps in the 2D drums at 128 x 128.)
 ///
 /// Open ends (a kiln's inlet and discharge, OpenSides): an Inflow face carries its given
 /// velocity and phi (upwind in step 1); an Outflow face gets the zero-gradient velocity of the
 /// predictor, then the projection's correction against the gas's hydrostatic pressure held on
 /// the face (step 5 solves for p - rho_gas g.x, 0 there). In a closed domain nothing changes.
 
+#include "kernels/cfd/CarriedAcceleration.hpp"
 #include "kernels/cfd/EnergyKernels.hpp"
 #include "kernels/cfd/FieldOps.hpp"
 #include "kernels/cfd/GhostFill.hpp"
@@ -79,6 +84,7 @@ struct TwoPhaseParameters {
   double gasPhi = 1e-3;              ///< cells with phi below this are gas (bed pressure)
   double settlingVelocity = 0.5;     ///< grains falling through the gas [m/s] (drift flux)
   bool coulombWall = true;           ///< Coulomb friction on the cut faces (else no-slip)
+  bool incrementalProjection = true; ///< carry the last step's acceleration (step 4)
   bool energy = false;               ///< solve the energy equation (temperature())
   ThermalParameters thermal;
   double pressureTolerance = 1e-11; ///< relative residual of the pressure solve
@@ -210,6 +216,9 @@ public:
       _alpha[a] = makeField(space, grid, s, "hikiln::cfd::alpha");
       _rhoFace[a] = makeField(space, grid, s, "hikiln::cfd::rhoFace");
       _beta[a] = makeField(space, grid, s, "hikiln::cfd::beta");
+      if (params.incrementalProjection) {
+        _accel.comp[a] = makeField(space, grid, s, "hikiln::cfd::accel");
+      }
     }
     _fct = makeFctWork(space, grid);
     for (int a = 0; a < 3; ++a) {
@@ -399,6 +408,9 @@ public:
     for (int c = 0; c < dims(); ++c) {
       momentumPredictor(_space, _cut, _shape, c, _u, _rhoFace[c], dt, _params.penalty, muMax,
                         friction, _pBed, _alpha[c], _rhs.comp[c], _uStar.comp[c]);
+      if (_params.incrementalProjection) {
+        addCarriedAcceleration(_space, _cut, c, _rhoFace[c], _accel.comp[c], _rhs.comp[c]);
+      }
     }
     MultigridOptions vopt;
     vopt.tolerance = _params.viscousTolerance;
@@ -415,11 +427,21 @@ public:
       throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: momentum solve did not converge (" +
                                std::to_string(report.viscous.iterations) + " iterations)");
     }
+    if (_params.incrementalProjection) {
+      for (int c = 0; c < dims(); ++c) {
+        removeCarriedAcceleration(_space, _cut, c, dt, _accel.comp[c], _uStar.comp[c]);
+      }
+    }
     if (_open.has(BoundaryKind::Outflow)) {
       extrapolateOutflow(_uStar.comp[2]);
     }
     addGravity(_space, _cut, _params.gravity, dt, _uStar);
     report.pressure = project(dt, _uStar, _p);
+    if (_params.incrementalProjection) {
+      for (int c = 0; c < dims(); ++c) {
+        updateCarriedAcceleration(_space, _cut, c, dt, _uStar.comp[c], _accel.comp[c]);
+      }
+    }
     for (int c = 0; c < dims(); ++c) {
       Kokkos::deep_copy(_space, _u.comp[c], _uStar.comp[c]);
     }
@@ -838,6 +860,7 @@ private:
   UnknownBox _cells;
   field_type _phi, _p, _pBed, _rho, _mu, _gammaDot, _div, _pAlpha;
   velocity_type _u, _uStar, _rhs;
+  velocity_type _accel; ///< the incremental projection's carried acceleration (step 4)
   field_type _alpha[3], _rhoFace[3], _beta[3];
   FctWork<memory_space> _fct;
   field_type _T, _Tstar, _phiOld, _kappa, _tAlpha, _tRhs, _tBeta[3];

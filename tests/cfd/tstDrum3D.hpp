@@ -61,7 +61,9 @@ TEST(TEST_CATEGORY, drum_3d_periodic_matches_2d) {
   DrumShell shell;
   shell.radius = 0.5 * diameter;
   shell.omega = 6.0 * 2.0 * hikiln::constants::pi / 60.0;
-  const TwoPhaseParameters params = test::drumParameters();
+  TwoPhaseParameters params = test::drumParameters();
+  // the two agree to the momentum solve's tolerance, amplified by the flow (see below)
+  params.viscousTolerance = 1e-11;
   solver_type flat(space{}, g2, shell, params, sameSampling());
   solver_type deep(space{}, g3, shell, params, sameSampling());
   flat.setFlatBed(-0.1);
@@ -92,15 +94,18 @@ TEST(TEST_CATEGORY, drum_3d_periodic_matches_2d) {
             << ", |d u| / shell speed " << uDiff / wallSpeed << ", |w| / shell speed "
             << axial / wallSpeed << ", relative dt difference " << worstDt
             << ", worst relative solids change per step " << worstSolids << "\n";
-  // The linear solves stop at relative residuals 1e-11 (pressure) and 1e-9 (momentum) on
+  // The linear solves stop at relative residuals 1e-11 (pressure and, here, momentum) on
   // operators of different size, so the two agree to about those tolerances, not bitwise.
-  // Measured (Serial): phi 6e-10, p_bed 3e-10 relative, u 1.5e-8 and w 4e-9 of the shell
-  // speed, dt 3e-10 relative. With the 2D deviator (tr(D) / 2) in the 2D strain rate the cut
-  // cells differed and phi by 3e-3, u by 8e-3 of the shell speed.
-  EXPECT_LT(phiDiff, 1e-8);
-  EXPECT_LT(pDiff, 1e-8 * pScale);
-  EXPECT_LT(uDiff, 1e-6 * wallSpeed);
-  EXPECT_LT(axial, 1e-7 * wallSpeed);
+  // Measured (Serial): phi 7e-12, p_bed 2.5e-12 relative, u 1.4e-9 and w 4.8e-10 of the shell
+  // speed. At the default momentum tolerance 1e-9 the differences grow with the steps (u 9e-9
+  // after 10, 2.3e-7 after 40, 1.8e-6 after 80; about 1e-8 throughout with the plain
+  // projection): they scale with that tolerance, 1e-7 gave 100 times more. With the 2D deviator
+  // (tr(D) / 2) in the 2D strain rate the cut cells differed and phi by 3e-3, u by 8e-3 of the
+  // shell speed.
+  EXPECT_LT(phiDiff, 1e-10);
+  EXPECT_LT(pDiff, 1e-10 * pScale);
+  EXPECT_LT(uDiff, 1e-7 * wallSpeed);
+  EXPECT_LT(axial, 1e-8 * wallSpeed);
   EXPECT_LT(worstDt, 1e-8);
   EXPECT_LT(worstSolids, 1e-10);
   // the bed moves (a frozen field would pass the comparisons above trivially)
