@@ -56,6 +56,12 @@ void addTwoPhaseKeys(cases::CaseSchema& s) {
       .positive()
       .defaultsTo("1e5")
       .doc("Cap of the bed viscosity");
+  s.real("rheology.viscosity_min")
+      .unit("Pa s")
+      .nonNegative()
+      .defaultsTo("0")
+      .doc("Floor of the bed viscosity, for beds without confining pressure (10 keeps the "
+           "incremental projection stable in the 30 % drum; docs/compare.md)");
   s.real("numerics.cfl")
       .unit("1")
       .range(0, 1, Bounds::OpenMin)
@@ -100,6 +106,7 @@ std::string readTwoPhaseKeys(const cases::CaseFile& c, TwoPhaseParameters& p) {
   r.muWall = c.real("rheology.mu_wall");
   r.strainRateFloor = c.real("rheology.strain_rate_floor");
   r.viscosityMax = c.real("rheology.viscosity_max");
+  r.viscosityMin = c.real("rheology.viscosity_min");
   const std::string file = c.string("rheology.file");
   if (file.empty()) {
     return "case file";

@@ -12,13 +12,17 @@
 ///
 /// Law: m(gamma_dot) = m0 + m1 gamma_dot (the calibration file's `rheology` section), i.e. a
 /// Bingham fluid with yield stress m0 p and plastic viscosity m1 p at given p;
-///   eta_bed = min(m(gamma_dot) p / max(gamma_dot, strainRateFloor), viscosityMax),
-/// regularised below strainRateFloor (a bi-viscous plug) and capped at viscosityMax; both are
-/// parameters (defaults 1e-3 1/s and 1e5 Pa s). Wall layer (cells cut by the shell):
-/// m = min(m(gamma_dot), muWall), so the shear stress the bed transmits across that layer does not
-/// exceed the Coulomb wall friction either (the friction itself is the capped wall drag of
-/// ProjectionKernels.hpp; measured alone, this cap changed the wall slip by < 2 %).
-/// Mixture: mu = muGas + (phi / phiMax) eta_bed (phi clamped to [0, phiMax]).
+///   eta_bed = min(max(m(gamma_dot) p / max(gamma_dot, strainRateFloor), viscosityMin),
+///                 viscosityMax),
+/// regularised below strainRateFloor (a bi-viscous plug), capped at viscosityMax and floored at
+/// viscosityMin; all are parameters (defaults 1e-3 1/s, 1e5 Pa s and 0). The floor matters
+/// where the bed pressure is 0 (the surface, or a bed in tension): there the law alone leaves
+/// the bed without any viscosity. Under the incremental projection the 30 % drum at 128 x 128
+/// cells burst at the shell in such a region (docs/compare.md); 10 Pa s stopped that. Wall layer
+/// (cells cut by the shell): m = min(m(gamma_dot), muWall), so the shear stress the bed transmits
+/// across that layer does not exceed the Coulomb wall friction either (the friction itself is the
+/// capped wall drag of ProjectionKernels.hpp; measured alone, this cap changed the wall slip by < 2
+/// %). Mixture: mu = muGas + (phi / phiMax) eta_bed (phi clamped to [0, phiMax]).
 
 #include "kernels/cfd/GhostFill.hpp"
 #include "kernels/cfd/Grid.hpp"
@@ -38,6 +42,7 @@ struct GranularRheology {
   double m1 = 0.0;               ///< dm / d gamma_dot [s] (m is floored at 0)
   double strainRateFloor = 1e-3; ///< regularisation of gamma_dot -> 0 [1/s]
   double viscosityMax = 1e5;     ///< cap of the bed viscosity [Pa s]
+  double viscosityMin = 0.0;     ///< floor of the bed viscosity [Pa s]
   double muWall = 0.3;           ///< bed-shell Coulomb friction coefficient
   double gasViscosity = 1.8e-5;  ///< Newtonian gas [Pa s]
   double phiMax = 0.6;           ///< solids volume fraction of the settled bed
@@ -49,7 +54,9 @@ struct GranularRheology {
   /// \brief Bed viscosity at bed pressure p and strain rate gammaDot (wall: Coulomb wall layer).
   KOKKOS_INLINE_FUNCTION double bedViscosity(double p, double gammaDot, bool wall) const {
     const double m = wall ? math::fmin(friction(gammaDot), muWall) : friction(gammaDot);
-    return math::fmin(m * math::fmax(p, 0.0) / math::fmax(gammaDot, strainRateFloor), viscosityMax);
+    return math::fmin(
+        math::fmax(m * math::fmax(p, 0.0) / math::fmax(gammaDot, strainRateFloor), viscosityMin),
+        viscosityMax);
   }
   /// \brief Mixture viscosity at solids fraction phi.
   KOKKOS_INLINE_FUNCTION double mixtureViscosity(double phi, double p, double gammaDot,
@@ -70,6 +77,8 @@ struct GranularRheology {
       fail("strain_rate_floor", "must be > 0");
     if (!(viscosityMax > gasViscosity))
       fail("viscosity_max", "must exceed the gas viscosity");
+    if (!(viscosityMin >= 0.0 && viscosityMin < viscosityMax))
+      fail("viscosity_min", "must be >= 0 and below viscosity_max");
     if (!(muWall >= 0.0))
       fail("mu_wall", "must be >= 0");
     if (!(gasViscosity > 0.0))

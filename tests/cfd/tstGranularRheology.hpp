@@ -94,6 +94,12 @@ TEST(TEST_CATEGORY, rheology_simple_shear_at_yield) {
   r.viscosityMax = 1e4;
   EXPECT_DOUBLE_EQ(r.bedViscosity(p, 1e-6, false), 1e4);
   EXPECT_DOUBLE_EQ(r.bedViscosity(-5.0, 1.0, false), 0.0);
+  // the floor: a bed without confining pressure keeps viscosityMin; above it nothing changes
+  r.viscosityMin = 10.0;
+  EXPECT_DOUBLE_EQ(r.bedViscosity(-5.0, 1.0, false), 10.0);
+  EXPECT_DOUBLE_EQ(r.bedViscosity(p, 1e-6, false), 1e4);
+  EXPECT_DOUBLE_EQ(r.bedViscosity(p, 2.0, true), r.muWall * p / 2.0);
+  r.viscosityMin = 0.0;
   EXPECT_DOUBLE_EQ(r.mixtureViscosity(0.0, p, 1.0, false), r.gasViscosity);
   EXPECT_NEAR(r.mixtureViscosity(0.5 * r.phiMax, p, 1.0, false),
               r.gasViscosity + 0.5 * r.bedViscosity(p, 1.0, false), 1e-12);
