@@ -73,8 +73,10 @@ void addTwoPhaseKeys(cases::CaseSchema& s) {
       .defaultsTo("plain")
       .doc("plain: the momentum predictor's stresses act on a velocity without the pressure "
            "gradient, so a steady state depends on dt; incremental: it carries the last step's "
-           "gravity and pressure acceleration and a steady state does not, but it is not yet "
-           "robust (bursts at the shell's cut faces; docs/compare.md)");
+           "gravity and pressure acceleration and a steady state does not "
+           "(test_cfd_inclined_layer), "
+           "but it needs rheology.viscosity_min at the shell's cut faces and the pressure there "
+           "carries part of the shell's torque (docs/compare.md)");
   const char* const solves[][3] = {{"momentum", "1e-9", "momentum (viscous)"},
                                    {"pressure", "1e-11", "pressure"}};
   for (auto const& solve : solves) {

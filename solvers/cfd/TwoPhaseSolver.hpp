@@ -24,9 +24,11 @@
 ///    last step (CarriedAcceleration.hpp), and u_hat = u* - dt a^n; otherwise (plain) a^n = 0
 ///    and u_hat = u*. The plain form's stresses act on a velocity that lacks the pressure
 ///    gradient, so its steady state depends on dt (a 2D drum's wall slip moved by 6 points
-///    between dt 0.02 and 0.005 s); the incremental form's does not, but it is not yet robust:
-///    the 30 % drum at 128 x 128 cells showed bursts to 11 m/s at the shell's cut faces
-///    (docs/compare.md, last section). Hence the default.
+///    between dt 0.02 and 0.005 s, and an inclined layer's base slips: test_cfd_inclined_layer);
+///    the incremental form's does not. It is not the default yet: the 30 % drum at 128 x 128
+///    cells burst at the shell's cut faces without a bed viscosity floor
+///    (rheology.viscosity_min 10 Pa s stops that), and the pressure on the cut faces carries
+///    about a fifth of the bed's torque past the Coulomb cap (docs/compare.md, last section).
 /// 5. Projection (CellMultigrid, PCG) for the full pressure with gravity (balanced force):
 ///    u** = u_hat + dt g, div(a / rho grad p) = div(a u**) / dt with a the face apertures,
 ///    u^{n+1} = u** - dt / rho grad p on open faces, a^{n+1} = (u^{n+1} - u_hat) / dt. Gravity

@@ -5,6 +5,12 @@
 
 namespace hikiln::cfd::test {
 
+/// Everything is fluid; walls only at the domain boundary (a box or channel without a shell).
+struct Everywhere {
+  KOKKOS_INLINE_FUNCTION bool inside(double, double, double) const { return true; }
+  KOKKOS_INLINE_FUNCTION double wallVelocity(int, double, double, double) const { return 0.0; }
+};
+
 inline TwoPhaseParameters drumParameters() {
   TwoPhaseParameters p;
   p.solidDensity = 2500.0;

@@ -8,6 +8,7 @@
 //   with the energy equation's diffusivity is bitwise the temperature field; one with a larger
 //   diffusivity conserves its heat too and mixes faster (smaller spread).
 #include "CfdTestUtils.hpp"
+#include "TwoPhaseTestUtils.hpp"
 #include "solvers/cfd/TwoPhaseSolver.hpp"
 
 #include <gtest/gtest.h>
@@ -20,11 +21,7 @@ namespace {
 using namespace hikiln::cfd;
 using space = TEST_EXECSPACE;
 
-// Everything is fluid; walls only at the domain boundary.
-struct Everywhere {
-  KOKKOS_INLINE_FUNCTION bool inside(double, double, double) const { return true; }
-  KOKKOS_INLINE_FUNCTION double wallVelocity(int, double, double, double) const { return 0.0; }
-};
+using test::Everywhere;
 
 template <class Solver, class FieldType>
 void setTemperature(Solver& solver, FieldType const& field, double cold, double hot) {
