@@ -89,6 +89,8 @@ int runContinuum(ContinuumRunOptions const& o) {
   double worstSolids = 0.0, worstHeat = 0.0, phiLo = 0.0, phiHi = 0.0, slipSum = 0.0;
   int mostHeatSubsteps = 0;
   std::int64_t slipSamples = 0;
+  ShellTorque torque; // sums over the outputs after slip_after
+  int torqueSamples = 0;
   StepStatistics stats;
   std::vector<io::XdmfGridStep> outputs;
   dem::TimeSeries series((out / "timeseries.csv").string(),
@@ -120,6 +122,15 @@ int runContinuum(ContinuumRunOptions const& o) {
         slipSum += slip;
         ++slipSamples;
       }
+      if (solver.time() > s.slipAfter) {
+        const ShellTorque t = solver.shellTorque();
+        torque.gravity += t.gravity;
+        torque.pressure += t.pressure;
+        torque.pressureCut += t.pressureCut;
+        torque.wallDrag += t.wallDrag;
+        torque.wallDragBound += t.wallDragBound;
+        ++torqueSamples;
+      }
       double speed = 0.0;
       for (double v : f.velocity) {
         speed = std::max(speed, std::fabs(v));
@@ -149,6 +160,23 @@ int runContinuum(ContinuumRunOptions const& o) {
   summary["wall_slip_percent"] =
       slipSamples > 0 ? nlohmann::json(100.0 * slipSum / slipSamples) : nlohmann::json(nullptr);
   summary["wall_slip_samples"] = slipSamples;
+  if (torqueSamples > 0) {
+    const double n = torqueSamples;
+    summary["shell_torque_N"] = {
+        {"note", "about the drum axis per metre, mean of the outputs after slip_after; "
+                 "counter-clockwise positive (kernels/cfd/ShellTorque.hpp)"},
+        {"gravity", torque.gravity / n},
+        {"wall_drag", torque.wallDrag / n},
+        {"wall_drag_coulomb_bound", torque.wallDragBound / n},
+        {"pressure", torque.pressure / n},
+        {"pressure_on_cut_faces", torque.pressureCut / n},
+        {"pressure_share_of_gravity",
+         torque.gravity != 0.0 ? -torque.pressure / torque.gravity : 0.0}};
+    spdlog::info("shell torque (N m/m, mean after {} s): gravity {:.4g}, wall drag {:.4g} "
+                 "(Coulomb bound {:.4g}), pressure {:.4g} ({:.4g} on the cut faces)",
+                 s.slipAfter, torque.gravity / n, torque.wallDrag / n, torque.wallDragBound / n,
+                 torque.pressure / n, torque.pressureCut / n);
+  }
   summary["solids_relative_change_total"] = (solver.solids() - solids0) / solids0;
   summary["solids_relative_change_worst_step"] = worstSolids;
   summary["phi_min"] = phiLo;

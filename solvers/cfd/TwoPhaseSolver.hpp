@@ -59,6 +59,7 @@
 #include "kernels/cfd/OpenEndKernels.hpp"
 #include "kernels/cfd/ProjectionKernels.hpp"
 #include "kernels/cfd/ShellGeometry.hpp"
+#include "kernels/cfd/ShellTorque.hpp"
 #include "kernels/cfd/VolumeFractionFct.hpp"
 #include "solvers/cfd/CellMultigrid.hpp"
 #include "solvers/cfd/SolveStats.hpp"
@@ -72,6 +73,7 @@
 #include <iterator>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace hikiln::cfd {
@@ -428,6 +430,12 @@ public:
                                              wallLawApertures());
     report.viscous = viscous.solvePcg(_uStar, _rhs);
     report.viscous.seconds = elapsedSince(viscousStart);
+    if constexpr (HasAxis<Shape>::value) {
+      // the shell's drag acts on the predicted velocity (shellTorque)
+      if (!_grid.is3D()) {
+        _dragTorque = shellTorqueOf(_uStar, dt);
+      }
+    }
     if (!report.viscous.converged) {
       throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: momentum solve did not converge (" +
                                std::to_string(report.viscous.iterations) + " iterations)");
@@ -453,6 +461,7 @@ public:
     apertureDivergence(_space, _cut, _u, _div);
     report.maxDivergence = maxAbsUnknowns(_space, _cells, _div);
     _time += dt;
+    _lastDt = dt;
     return report;
   }
 
@@ -502,6 +511,18 @@ public:
   /// (tracerHeat() units).
   double tracerInLastStep(int n) const { return _tracers.at(n).lastIn; }
   double tracerOutLastStep(int n) const { return _tracers.at(n).lastOut; }
+
+  /// \brief The torque budget about the shell's axis of the last step, per metre of drum (2D
+  /// drums only, all 0 in 3D or before the first step; ShellTorque.hpp).
+  ShellTorque shellTorque() const {
+    if (_grid.is3D() || !(_lastDt > 0.0)) {
+      return ShellTorque();
+    }
+    ShellTorque sum = shellTorqueOf(_u, _lastDt);
+    sum.wallDrag = _dragTorque.wallDrag;
+    sum.wallDragBound = _dragTorque.wallDragBound;
+    return sum;
+  }
 
   /// \brief Solids content sum(capacity x phi) (x cell volume = m^3).
   double solids() { return solidsContent(_space, _cut, _phi); }
@@ -698,6 +719,22 @@ private:
     return open;
   }
 
+  /// ShellTorque.hpp's budget with the drag on velocity u and the last predictor's alpha.
+  ShellTorque shellTorqueOf(velocity_type const& u, double dt) const {
+    ShellTorque sum;
+    for (int c = 0; c < 2; ++c) {
+      const ShellTorque t =
+          shellTorqueOfComponent(_space, _cut, _shape, c, u.comp[c], _rhoFace[c], _alpha[c], _p,
+                                 _pBed, _params.gravity[c], dt, _params.rheology.muWall);
+      sum.gravity += t.gravity;
+      sum.pressure += t.pressure;
+      sum.pressureCut += t.pressureCut;
+      sum.wallDrag += t.wallDrag;
+      sum.wallDragBound += t.wallDragBound;
+    }
+    return sum;
+  }
+
   void updateViscosity() {
     for (int c = 0; c < dims(); ++c) {
       fillGhostsVelocity(_space, _grid, _velocityBc, c, _u.comp[c]);
@@ -881,6 +918,8 @@ private:
   InflowTemperature _inflowT;
   double _solidsIn = 0.0, _solidsOut = 0.0;
   double _time = 0.0;
+  double _lastDt = 0.0;    ///< of the last step (shellTorque)
+  ShellTorque _dragTorque; ///< the shell's drag on the last predicted velocity
 };
 
 } // namespace hikiln::cfd

@@ -4,7 +4,8 @@
 // with dt_max 0.02 s and 0.01 s; the wall slip (sampled every 0.1 s over the last second) must
 // agree. With the plain projection (the predictor's
 // stresses act on a velocity that lacks the pressure gradient) they do not: the test asserts
-// that too, so it would notice a carried acceleration that does nothing.
+// that too, so it would notice a carried acceleration that does nothing. The shell torque budget
+// (ShellTorque.hpp) must close in all four runs.
 #include "CfdTestUtils.hpp"
 #include "TwoPhaseTestUtils.hpp"
 #include "solvers/cfd/TwoPhaseSolver.hpp"
@@ -25,6 +26,7 @@ using solver_type = TwoPhaseSolver<space>;
 struct SteadyFlow {
   double slip = 0.0;       ///< wall slip, mean of the samples
   double slipSpread = 0.0; ///< largest - smallest sample
+  ShellTorque torque;      ///< after the last step
 };
 
 // Runs to `duration`, sampling the wall slip every 0.1 s over the last second.
@@ -54,10 +56,14 @@ SteadyFlow steadyFlow(bool incremental, double dtMax, double duration) {
     ++samples;
   }
   flow.slip /= samples;
+  flow.torque = solver.shellTorque();
   flow.slipSpread = hi - lo;
   std::cout << (incremental ? "incremental" : "plain") << " projection, dt_max " << dtMax
             << ": wall slip " << 100 * flow.slip << " % (spread " << 100 * flow.slipSpread
-            << " points over the last second)\n";
+            << " points over the last second); torque N: gravity " << flow.torque.gravity
+            << ", wall drag " << flow.torque.wallDrag << " (bound " << flow.torque.wallDragBound
+            << "), pressure " << flow.torque.pressure << " (cut faces " << flow.torque.pressureCut
+            << ")\n";
   return flow;
 }
 
@@ -71,6 +77,14 @@ TEST(TEST_CATEGORY, steady_drum_flow_does_not_depend_on_the_time_step) {
   EXPECT_LT(fine.slipSpread, 0.03);
   EXPECT_LT(std::fabs(coarse.slip - fine.slip), 0.01);
   EXPECT_GT(std::fabs(plainCoarse.slip - plainFine.slip), 0.03);
+  // the torque budget about the axis closes near a steady state (measured within 0.6-1.5 % of
+  // the gravity torque: the viscous stresses add none), and the shell's drag stays within its
+  // Coulomb bound
+  for (SteadyFlow const* f : {&coarse, &fine, &plainCoarse, &plainFine}) {
+    const ShellTorque& t = f->torque;
+    EXPECT_LT(std::fabs(t.gravity + t.wallDrag + t.pressure), 0.03 * std::fabs(t.gravity));
+    EXPECT_LE(t.wallDrag, 1.001 * t.wallDragBound);
+  }
 }
 
 } // namespace
