@@ -123,12 +123,7 @@ int runContinuum(ContinuumRunOptions const& o) {
         ++slipSamples;
       }
       if (solver.time() > s.slipAfter) {
-        const ShellTorque t = solver.shellTorque();
-        torque.gravity += t.gravity;
-        torque.pressure += t.pressure;
-        torque.pressureCut += t.pressureCut;
-        torque.wallDrag += t.wallDrag;
-        torque.wallDragBound += t.wallDragBound;
+        torque += solver.shellTorque();
         ++torqueSamples;
       }
       double speed = 0.0;

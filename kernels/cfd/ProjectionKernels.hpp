@@ -75,6 +75,14 @@ struct WallFriction {
   bool enabled = false;
   double muWall = 0.0;
   double slipFloor = 1e-3; ///< m/s: regularises the drag at zero slip (stick below)
+
+  /// \brief The largest wall force on one cut face of component c per unit depth,
+  /// mu_wall sigma_n h: sigma_n ~ the larger bed pressure of the two cells beside the face, h the
+  /// wall length per cut cell (~ a cell edge across c). ShellTorque.hpp sums it as a bound.
+  KOKKOS_INLINE_FUNCTION double capForce(Grid const& grid, int c, double pBedHere,
+                                         double pBedBelow) const {
+    return muWall * math::fmax(pBedHere, pBedBelow) * grid.spacing(c == 0 ? 1 : 0);
+  }
 };
 
 /// \brief Coefficients of the momentum predictor of component c on its faces:
@@ -119,9 +127,9 @@ void momentumPredictor(ExecutionSpace const& space, CutCells<MemorySpace> const&
           // mu_wall sigma_n / h (sigma_n ~ the bed pressure beside the face)
           int q[3] = {I, J, K};
           q[c] -= 1;
-          const double sigma = math::fmax(pBed(I, J, K), pBed(q[0], q[1], q[2]));
           const double slip = math::fmax(math::fabs(here - wall), friction.slipFloor);
-          forcing = math::fmin(forcing, friction.muWall * sigma / (h * slip));
+          const double cap = friction.capForce(grid, c, pBed(I, J, K), pBed(q[0], q[1], q[2]));
+          forcing = math::fmin(forcing, cap / (h * h * slip));
         }
         alpha(I, J, K) = rf / dt + forcing;
         double value = rf * here / dt + forcing * wall;

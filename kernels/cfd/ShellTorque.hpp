@@ -8,11 +8,12 @@
 /// arm at the centroid of its open part, as the wall velocity is taken there. The drag is
 /// (alpha - rho_face / dt)(u_wall - u*) with the alpha and the predicted velocity u* of the
 /// last momentum predictor (TwoPhaseSolver keeps it); its bound is the
-/// Coulomb cap mu_wall sigma h per cut face (ProjectionKernels.hpp, momentumPredictor). At a
+/// Coulomb cap per cut face, WallFriction::capForce (ProjectionKernels.hpp). At a
 /// steady state gravity + pressure + drag is about 0 (the viscous stresses add no torque but
 /// through the cut faces' Brinkman terms, which the drag includes).
 
 #include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/ProjectionKernels.hpp"
 #include "kernels/cfd/ShellGeometry.hpp"
 
 #include <Kokkos_Core.hpp>
@@ -33,6 +34,15 @@ struct ShellTorque {
   double pressureCut = 0.0;   ///< the part of `pressure` on the cut faces
   double wallDrag = 0.0;      ///< the shell's drag on the cut faces
   double wallDragBound = 0.0; ///< sum over the cut faces of mu_wall sigma h |arm|
+
+  ShellTorque& operator+=(ShellTorque const& o) {
+    gravity += o.gravity;
+    pressure += o.pressure;
+    pressureCut += o.pressureCut;
+    wallDrag += o.wallDrag;
+    wallDragBound += o.wallDragBound;
+    return *this;
+  }
 };
 
 /// \brief The budget of one face component c of a 2D grid (see the file comment).
@@ -42,7 +52,7 @@ ShellTorque shellTorqueOfComponent(ExecutionSpace const& space, CutCells<MemoryS
                                    Field<MemorySpace> const& rhoFace,
                                    Field<MemorySpace> const& alpha, Field<MemorySpace> const& p,
                                    Field<MemorySpace> const& pBed, double gravity, double dt,
-                                   double muWall) {
+                                   WallFriction const& friction) {
   const Grid grid = cc.grid;
   const int g = grid.ghost;
   const auto ap = cc.aperture[c];
@@ -51,7 +61,6 @@ ShellTorque shellTorqueOfComponent(ExecutionSpace const& space, CutCells<MemoryS
   const bool periodic = cc.periodic[c];
   const double volume = grid.hx * grid.hy;
   const double h = grid.spacing(c); // across the face, for grad p
-  const double wallLength = grid.spacing(c == 0 ? 1 : 0);
   const double axisX = shape.cx, axisY = shape.cy;
   ShellTorque t;
   Kokkos::parallel_reduce(
@@ -77,8 +86,7 @@ ShellTorque shellTorqueOfComponent(ExecutionSpace const& space, CutCells<MemoryS
           pressureCutSum += pressureTorque;
           const double wall = shape.wallVelocity(c, x, y, 0.0);
           dragSum += (alpha(I, J, 0) - rf / dt) * (wall - u(I, J, 0)) * volume * arm;
-          const double sigma = math::fmax(pBed(I, J, 0), pBed(Il, Jl, 0));
-          boundSum += muWall * sigma * wallLength * math::fabs(arm);
+          boundSum += friction.capForce(grid, c, pBed(I, J, 0), pBed(Il, Jl, 0)) * math::fabs(arm);
         }
       },
       t.gravity, t.pressure, t.pressureCut, t.wallDrag, t.wallDragBound);

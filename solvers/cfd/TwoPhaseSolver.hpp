@@ -409,9 +409,7 @@ public:
       fillGhostsVelocity(_space, _grid, _velocityBc, c, _u.comp[c]);
     }
     const double muMax = maxAbsUnknowns(_space, _cells, _mu);
-    WallFriction friction;
-    friction.enabled = coulombWallOn();
-    friction.muWall = _params.rheology.muWall;
+    const WallFriction friction = wallFriction();
     for (int c = 0; c < dims(); ++c) {
       momentumPredictor(_space, _cut, _shape, c, _u, _rhoFace[c], dt, _params.penalty, muMax,
                         friction, _pBed, _alpha[c], _rhs.comp[c], _uStar.comp[c]);
@@ -704,6 +702,13 @@ private:
     faceDensities(_space, _grid, _periodic, _rho, _rhoFace);
   }
 
+  WallFriction wallFriction() const {
+    WallFriction friction;
+    friction.enabled = coulombWallOn();
+    friction.muWall = _params.rheology.muWall;
+    return friction;
+  }
+
   /// True when the shell acts through the Coulomb wall law (else it is a no-slip wall).
   bool coulombWallOn() const { return _params.coulombWall && _params.constantBedViscosity == 0.0; }
 
@@ -723,14 +728,8 @@ private:
   ShellTorque shellTorqueOf(velocity_type const& u, double dt) const {
     ShellTorque sum;
     for (int c = 0; c < 2; ++c) {
-      const ShellTorque t =
-          shellTorqueOfComponent(_space, _cut, _shape, c, u.comp[c], _rhoFace[c], _alpha[c], _p,
-                                 _pBed, _params.gravity[c], dt, _params.rheology.muWall);
-      sum.gravity += t.gravity;
-      sum.pressure += t.pressure;
-      sum.pressureCut += t.pressureCut;
-      sum.wallDrag += t.wallDrag;
-      sum.wallDragBound += t.wallDragBound;
+      sum += shellTorqueOfComponent(_space, _cut, _shape, c, u.comp[c], _rhoFace[c], _alpha[c], _p,
+                                    _pBed, _params.gravity[c], dt, wallFriction());
     }
     return sum;
   }
