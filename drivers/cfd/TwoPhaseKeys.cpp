@@ -75,8 +75,8 @@ void addTwoPhaseKeys(cases::CaseSchema& s) {
            "gradient, so a steady state depends on dt; incremental: it carries the last step's "
            "gravity and pressure acceleration and a steady state does not "
            "(test_cfd_inclined_layer), "
-           "but it needs rheology.viscosity_min at the shell's cut faces and the pressure there "
-           "carries part of the shell's torque (docs/compare.md)");
+           "but it needs rheology.viscosity_min at the shell's cut faces and the Kramers kilns "
+           "fail their validation with it (docs/compare.md)");
   const char* const solves[][3] = {{"momentum", "1e-9", "momentum (viscous)"},
                                    {"pressure", "1e-11", "pressure"}};
   for (auto const& solve : solves) {

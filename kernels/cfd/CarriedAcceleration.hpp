@@ -12,6 +12,19 @@
 /// left a face: there grad p^n over the gas density would accelerate the gas to metres per
 /// second.
 ///
+/// On a cut face (0 < aperture < 1) the predictor carries only the open share, aperture x a^n.
+/// The projection's pressure gradient acts on the face's whole volume h^2, part of which lies in
+/// the shell: the share (1 - aperture) stands for the shell's reaction, and along the face's axis
+/// it has a component tangential to the shell, a torque about the axis that a real wall's normal
+/// pressure cannot exert and the Coulomb cap would not limit (it carried about a fifth of a
+/// drum bed's torque). Weighted by the apertures the pressure has no torque at all: the sum over
+/// faces of aperture h^2 arm grad p equals minus the sum over cells of p times the aperture
+/// divergence of a rigid rotation, which is 0 because a rotation has no flux through the circle
+/// (ShellTorque.hpp measures it). Gravity on the face shares the weight, so a layered bed at rest
+/// still needs no shell force. The shell acts on the rest of the face only through the capped
+/// forcing of the momentum predictor (ProjectionKernels.hpp). At a steady state the predictor's
+/// balance is therefore aperture (rho g - grad p) + shell forcing + stresses = 0 on a cut face.
+///
 /// Faces taking part: the open faces (aperture > 0) of component c, the last node of a periodic
 /// axis included (it repeats the first: the divergence reads it, and a differing copy would make
 /// the pressure problem inconsistent). Closed faces are held at the shell velocity; the boundary
@@ -54,7 +67,8 @@ template <class MemorySpace> struct CarriedFaces {
   }
 };
 
-/// \brief rhs += rhoFace accel on component c's faces. (The solve's initial guess stays u^n: at
+/// \brief rhs += rhoFace aperture accel on component c's faces (the aperture is 1 but on cut faces,
+/// see the file comment). (The solve's initial guess stays u^n: at
 /// a steady state u* = u^n exactly, whereas u^n + dt accel would start the solve far off in a
 /// viscous bed, and its stopping rule is relative to the initial residual.)
 template <class ExecutionSpace, class MemorySpace>
@@ -62,12 +76,13 @@ void addCarriedAcceleration(ExecutionSpace const& space, CutCells<MemorySpace> c
                             Field<MemorySpace> const& rhoFace, Field<MemorySpace> const& accel,
                             Field<MemorySpace> const& rhs) {
   const CarriedFaces<MemorySpace> faces(cc, c);
+  const auto open = cc.aperture[c];
   Kokkos::parallel_for(
       "hikiln::cfd::addCarriedAcceleration", gridPolicy(space, {0, 0, 0}, faces.hi),
       KOKKOS_LAMBDA(const int i, const int j, const int k) {
         if (faces.active(i, j, k)) {
           const int I = i + faces.offset[0], J = j + faces.offset[1], K = k + faces.offset[2];
-          rhs(I, J, K) += rhoFace(I, J, K) * accel(I, J, K);
+          rhs(I, J, K) += rhoFace(I, J, K) * open(I, J, K) * accel(I, J, K);
         }
       });
 }

@@ -2,10 +2,12 @@
 /// \file ShellTorque.hpp
 /// \brief The torque budget of a 2D drum about its axis, per metre of drum: what turns the bed
 /// (the shell's drag on the cut faces) against what holds it back (gravity), and the pressure's
-/// share. On a real circular wall the pressure is normal and has no torque; on the cut faces it
-/// can have one, and that part is not limited by the Coulomb cap (docs/compare.md, last
-/// section). Every open face counts with the volume hx hy its momentum equation gives it and its
-/// arm at the centroid of its open part, as the wall velocity is taken there. The drag is
+/// share. On a real circular wall the pressure is normal and has no torque. Every open face
+/// counts with the volume hx hy its momentum equation gives it and its arm at the centroid of its
+/// open part, as the wall velocity is taken there. Gravity and pressure on a cut face count with
+/// the weight the predictor gives them: the aperture with the incremental projection
+/// (CarriedAcceleration.hpp; the pressure's torque then vanishes), 1 with the plain one, whose
+/// projection applies them to the whole face. The drag is
 /// (alpha - rho_face / dt)(u_wall - u*) with the alpha and the predicted velocity u* of the
 /// last momentum predictor (TwoPhaseSolver keeps it); its bound is the
 /// Coulomb cap per cut face, WallFriction::capForce (ProjectionKernels.hpp). At a
@@ -52,7 +54,7 @@ ShellTorque shellTorqueOfComponent(ExecutionSpace const& space, CutCells<MemoryS
                                    Field<MemorySpace> const& rhoFace,
                                    Field<MemorySpace> const& alpha, Field<MemorySpace> const& p,
                                    Field<MemorySpace> const& pBed, double gravity, double dt,
-                                   WallFriction const& friction) {
+                                   WallFriction const& friction, bool openShareOnCutFaces) {
   const Grid grid = cc.grid;
   const int g = grid.ghost;
   const auto ap = cc.aperture[c];
@@ -79,8 +81,9 @@ ShellTorque shellTorqueOfComponent(ExecutionSpace const& space, CutCells<MemoryS
         const double x = cx(I, J, 0), y = cy(I, J, 0);
         const double arm = c == 0 ? -(y - axisY) : x - axisX;
         const double rf = rhoFace(I, J, 0);
-        gravitySum += rf * gravity * volume * arm;
-        const double pressureTorque = -(p(I, J, 0) - p(Il, Jl, 0)) / h * volume * arm;
+        const double share = openShareOnCutFaces ? open : 1.0;
+        gravitySum += rf * gravity * share * volume * arm;
+        const double pressureTorque = -(p(I, J, 0) - p(Il, Jl, 0)) / h * share * volume * arm;
         pressureSum += pressureTorque;
         if (open < 1.0) {
           pressureCutSum += pressureTorque;

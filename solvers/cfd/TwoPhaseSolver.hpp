@@ -21,14 +21,16 @@
 ///    (ViscousOperator.hpp): the shell pulls on the bed only through the capped forcing on the
 ///    cut faces, mu_wall sigma_n. With `incrementalProjection` (off by default) the predictor
 ///    adds rho a^n, what gravity and the pressure gradient did to each face's velocity in the
-///    last step (CarriedAcceleration.hpp), and u_hat = u* - dt a^n; otherwise (plain) a^n = 0
+///    last step (CarriedAcceleration.hpp; on a cut face only its open share, aperture x a^n, so
+///    that the pressure exerts no torque about the shell's axis), and u_hat = u* - dt a^n;
+///    otherwise (plain) a^n = 0
 ///    and u_hat = u*. The plain form's stresses act on a velocity that lacks the pressure
 ///    gradient, so its steady state depends on dt (a 2D drum's wall slip moved by 6 points
 ///    between dt 0.02 and 0.005 s, and an inclined layer's base slips: test_cfd_inclined_layer);
 ///    the incremental form's does not. It is not the default yet: the 30 % drum at 128 x 128
 ///    cells burst at the shell's cut faces without a bed viscosity floor
-///    (rheology.viscosity_min 10 Pa s stops that), and the pressure on the cut faces carries
-///    about a fifth of the bed's torque past the Coulomb cap (docs/compare.md, last section).
+///    (rheology.viscosity_min 10 Pa s stops that), and the Kramers kilns fail their validation
+///    with it: their beds stand steeper than the rheology allows (docs/compare.md, last section).
 /// 5. Projection (CellMultigrid, PCG) for the full pressure with gravity (balanced force):
 ///    u** = u_hat + dt g, div(a / rho grad p) = div(a u**) / dt with a the face apertures,
 ///    u^{n+1} = u** - dt / rho grad p on open faces, a^{n+1} = (u^{n+1} - u_hat) / dt. Gravity
@@ -729,7 +731,8 @@ private:
     ShellTorque sum;
     for (int c = 0; c < 2; ++c) {
       sum += shellTorqueOfComponent(_space, _cut, _shape, c, u.comp[c], _rhoFace[c], _alpha[c], _p,
-                                    _pBed, _params.gravity[c], dt, wallFriction());
+                                    _pBed, _params.gravity[c], dt, wallFriction(),
+                                    _params.incrementalProjection);
     }
     return sum;
   }
