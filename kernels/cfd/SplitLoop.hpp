@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <string>
+#include <type_traits>
 
 namespace hikiln::cfd {
 
@@ -74,6 +75,53 @@ template <class Body> struct InteriorColourCells {
   }
 };
 
+/// Host versions: one launch index per row (j, k), the x range walked inside the functor, so the
+/// compiler sees a plain loop and keeps the body's loop-invariant reads (view strides, operator
+/// flags) in registers; per cell they cost as much as the stencil itself. Rows are a flat range
+/// so that threads split them evenly.
+struct Rows {
+  int i0, i1, j0, nj, k0;
+  Rows(int const (&lo)[3], int const (&hi)[3])
+      : i0(lo[0]), i1(hi[0]), j0(lo[1]), nj(hi[1] - lo[1]), k0(lo[2]) {}
+  KOKKOS_INLINE_FUNCTION int j(const int row) const { return j0 + row % nj; }
+  KOKKOS_INLINE_FUNCTION int k(const int row) const { return k0 + row / nj; }
+};
+
+template <class Body> struct InteriorRows {
+  Body body;
+  Rows rows;
+  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int row) const {
+    const int j = rows.j(row), k = rows.k(row);
+    for (int i = rows.i0; i < rows.i1; ++i) {
+      body.template cell<true>(i, j, k);
+    }
+  }
+};
+
+template <class Body> struct InteriorRowSum {
+  using value_type = double;
+  Body body;
+  Rows rows;
+  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int row, double& sum) const {
+    const int j = rows.j(row), k = rows.k(row);
+    for (int i = rows.i0; i < rows.i1; ++i) {
+      sum += body.template cell<true>(i, j, k);
+    }
+  }
+};
+
+template <class Body> struct InteriorColourRows {
+  Body body;
+  Rows rows;
+  int colour;
+  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int row) const {
+    const int j = rows.j(row), k = rows.k(row);
+    for (int i = rows.i0 + ((colour + rows.i0 + j + k) & 1); i < rows.i1; i += 2) {
+      body.template cell<true>(i, j, k);
+    }
+  }
+};
+
 template <class Body> struct ShellColourCells {
   Body body;
   BoxSplit split;
@@ -87,6 +135,19 @@ template <class Body> struct ShellColourCells {
   }
 };
 
+/// True when grid kernels on ExecutionSpace walk whole rows per launch index (host spaces);
+/// device spaces keep one cell per index.
+template <class ExecutionSpace>
+constexpr bool walksRows =
+    std::is_same<typename ExecutionSpace::memory_space, Kokkos::HostSpace>::value;
+
+/// One index per (j, k) row of the box [lo, hi).
+template <class ExecutionSpace>
+Kokkos::RangePolicy<ExecutionSpace> rowPolicy(ExecutionSpace const& space, int const (&lo)[3],
+                                              int const (&hi)[3]) {
+  return Kokkos::RangePolicy<ExecutionSpace>(space, 0, (hi[1] - lo[1]) * (hi[2] - lo[2]));
+}
+
 } // namespace detail
 
 /// \brief body.cell<Interior>(i, j, k) on every cell of split (labels "<label>::interior/shell").
@@ -94,9 +155,15 @@ template <class ExecutionSpace, class Body>
 void forEachSplitCell(ExecutionSpace const& space, std::string const& label, BoxSplit const& split,
                       Body const& body) {
   if (split.interiorSize() > 0) {
-    Kokkos::parallel_for(label + "::interior",
-                         gridPolicy(space, split.interiorLo, split.interiorHi),
-                         detail::InteriorCells<Body>{body});
+    if constexpr (detail::walksRows<ExecutionSpace>) {
+      Kokkos::parallel_for(label + "::interior",
+                           detail::rowPolicy(space, split.interiorLo, split.interiorHi),
+                           detail::InteriorRows<Body>{body, {split.interiorLo, split.interiorHi}});
+    } else {
+      Kokkos::parallel_for(label + "::interior",
+                           gridPolicy(space, split.interiorLo, split.interiorHi),
+                           detail::InteriorCells<Body>{body});
+    }
   }
   if (split.shellSize() > 0) {
     Kokkos::parallel_for(label + "::shell",
@@ -112,9 +179,15 @@ double sumOverSplitCells(ExecutionSpace const& space, std::string const& label,
                          BoxSplit const& split, Body const& body) {
   double interior = 0.0, shell = 0.0;
   if (split.interiorSize() > 0) {
-    Kokkos::parallel_reduce(label + "::interior",
-                            gridPolicy(space, split.interiorLo, split.interiorHi),
-                            detail::InteriorSum<Body>{body}, interior);
+    if constexpr (detail::walksRows<ExecutionSpace>) {
+      Kokkos::parallel_reduce(
+          label + "::interior", detail::rowPolicy(space, split.interiorLo, split.interiorHi),
+          detail::InteriorRowSum<Body>{body, {split.interiorLo, split.interiorHi}}, interior);
+    } else {
+      Kokkos::parallel_reduce(label + "::interior",
+                              gridPolicy(space, split.interiorLo, split.interiorHi),
+                              detail::InteriorSum<Body>{body}, interior);
+    }
   }
   if (split.shellSize() > 0) {
     Kokkos::parallel_reduce(label + "::shell",
@@ -131,10 +204,17 @@ void forEachSplitColourCell(ExecutionSpace const& space, std::string const& labe
   const int i0 = split.interiorLo[0];
   const int i1 = split.interiorHi[0];
   if (split.interiorSize() > 0) {
-    Kokkos::parallel_for(label + "::interior",
-                         gridPolicy(space, {0, split.interiorLo[1], split.interiorLo[2]},
-                                    {(i1 - i0 + 1) / 2, split.interiorHi[1], split.interiorHi[2]}),
-                         detail::InteriorColourCells<Body>{body, i0, i1, colour});
+    if constexpr (detail::walksRows<ExecutionSpace>) {
+      Kokkos::parallel_for(
+          label + "::interior", detail::rowPolicy(space, split.interiorLo, split.interiorHi),
+          detail::InteriorColourRows<Body>{body, {split.interiorLo, split.interiorHi}, colour});
+    } else {
+      Kokkos::parallel_for(
+          label + "::interior",
+          gridPolicy(space, {0, split.interiorLo[1], split.interiorLo[2]},
+                     {(i1 - i0 + 1) / 2, split.interiorHi[1], split.interiorHi[2]}),
+          detail::InteriorColourCells<Body>{body, i0, i1, colour});
+    }
   }
   if (split.shellSize() > 0) {
     Kokkos::parallel_for(label + "::shell",

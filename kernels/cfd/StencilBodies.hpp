@@ -19,7 +19,7 @@ namespace hikiln::cfd {
 template <class S> struct StencilApply {
   S s;
   typename S::field_type y;
-  template <bool Interior> KOKKOS_INLINE_FUNCTION double cell(int i, int j, int k) const {
+  template <bool Interior> KOKKOS_FORCEINLINE_FUNCTION double cell(int i, int j, int k) const {
     const int g = s.ghost, gz = s.ghostZ;
     double diag, rest;
     s.template stencil<Interior>(i, j, k, diag, rest);
@@ -32,7 +32,7 @@ template <class S> struct StencilApply {
 template <class S> struct StencilResidual {
   S s;
   typename S::field_type f, r;
-  template <bool Interior> KOKKOS_INLINE_FUNCTION double cell(int i, int j, int k) const {
+  template <bool Interior> KOKKOS_FORCEINLINE_FUNCTION double cell(int i, int j, int k) const {
     const int g = s.ghost, gz = s.ghostZ;
     double diag, rest;
     s.template stencil<Interior>(i, j, k, diag, rest);
@@ -46,7 +46,7 @@ template <class S> struct StencilResidual {
 template <class S> struct StencilGaussSeidel {
   S s;
   typename S::field_type f;
-  template <bool Interior> KOKKOS_INLINE_FUNCTION double cell(int i, int j, int k) const {
+  template <bool Interior> KOKKOS_FORCEINLINE_FUNCTION double cell(int i, int j, int k) const {
     const int g = s.ghost, gz = s.ghostZ;
     double diag, rest;
     s.template stencil<Interior>(i, j, k, diag, rest);

@@ -84,12 +84,14 @@ template <class MemorySpace> struct ViscousOperator {
 /// \brief Splits (A u)_C at unknown (i, j, k) of component C (Dims axes) into diag * u_c(i, j, k) -
 /// rest: rest holds the neighbours of the same component, the other components (shear coupling)
 /// and, when affine, the boundary values. Interior: no neighbour, viscosity or coupling read needs
-/// a boundary closure or wrap-around (see componentSplit).
+/// a boundary closure or wrap-around (see componentSplit). Forced inline (with the bodies of
+/// StencilBodies.hpp): left to itself, the compiler keeps it out of line in the large solver
+/// translation units, a call per unknown that doubled the cost of a V-cycle.
 template <bool Interior, int Dims, int C, class MemorySpace>
-KOKKOS_INLINE_FUNCTION void viscousStencil(ViscousOperator<MemorySpace> const& op,
-                                           GridScales const& scale,
-                                           VelocityFields<MemorySpace> const& vel, int i, int j,
-                                           int k, bool affine, double& diag, double& rest) {
+KOKKOS_FORCEINLINE_FUNCTION void
+viscousStencil(ViscousOperator<MemorySpace> const& op, GridScales const& scale,
+               VelocityFields<MemorySpace> const& vel, int i, int j, int k, bool affine,
+               double& diag, double& rest) {
   constexpr int c = C;
   const int off[3] = {op.grid.ghost, op.grid.ghost, op.grid.ghostZ()};
   const int idx[3] = {i, j, k};
@@ -183,7 +185,7 @@ template <int Dims, int C, class MemorySpace> struct ViscousStencil {
       : op(o), scale(o.grid), u(uIn), x(uIn.comp[C]), affine(aff), ghost(o.grid.ghost),
         ghostZ(o.grid.ghostZ()) {}
   template <bool Interior>
-  KOKKOS_INLINE_FUNCTION void stencil(int i, int j, int k, double& diag, double& rest) const {
+  KOKKOS_FORCEINLINE_FUNCTION void stencil(int i, int j, int k, double& diag, double& rest) const {
     viscousStencil<Interior, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
   }
 };
