@@ -1,7 +1,8 @@
 #pragma once
 /// \file SplitLoop.hpp
-/// \brief Loops over the cells of a BoxSplit: the interior with a multidimensional policy and the
-/// branch-free stencil, the shell with a flat policy and the boundary closures. A stencil kernel
+/// \brief Loops over the cells of a BoxSplit: the interior with the branch-free stencil (on the
+/// host one launch index per (j, k) row walking i, on devices one per cell), the shell with a flat
+/// policy and the boundary closures. A stencil kernel
 /// is written once as a body with
 ///
 ///     template <bool Interior> KOKKOS_INLINE_FUNCTION double cell(int i, int j, int k) const;
