@@ -67,10 +67,10 @@ template <class MemorySpace> struct CarriedFaces {
   }
 };
 
-/// \brief rhs += rhoFace aperture accel on component c's faces (the aperture is 1 but on cut faces,
-/// see the file comment). (The solve's initial guess stays u^n: at
-/// a steady state u* = u^n exactly, whereas u^n + dt accel would start the solve far off in a
-/// viscous bed, and its stopping rule is relative to the initial residual.)
+/// \brief rhs += rhoFace aperture accel on component c's faces (the aperture is 1 except on cut
+/// faces, see the file comment). The solve's initial guess stays u^n: at a steady state
+/// u* = u^n exactly, whereas u^n + dt accel would start the solve far off in a viscous bed, and
+/// its stopping rule is relative to the initial residual.
 template <class ExecutionSpace, class MemorySpace>
 void addCarriedAcceleration(ExecutionSpace const& space, CutCells<MemorySpace> const& cc, int c,
                             Field<MemorySpace> const& rhoFace, Field<MemorySpace> const& accel,

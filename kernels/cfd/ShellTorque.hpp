@@ -7,11 +7,10 @@
 /// open part, as the wall velocity is taken there. Gravity and pressure on a cut face count with
 /// the weight the predictor gives them: the aperture with the incremental projection
 /// (CarriedAcceleration.hpp; the pressure's torque then vanishes), 1 with the plain one, whose
-/// projection applies them to the whole face. The drag is
-/// (alpha - rho_face / dt)(u_wall - u*) with the alpha and the predicted velocity u* of the
-/// last momentum predictor (TwoPhaseSolver keeps it); its bound is the
-/// Coulomb cap per cut face, WallFriction::capForce (ProjectionKernels.hpp). At a
-/// steady state gravity + pressure + drag is about 0 (the viscous stresses add no torque but
+/// projection applies them to the whole face. The drag is (alpha - rho_face / dt)(u_wall - u*) with
+/// the alpha and the predicted velocity u* of the last momentum predictor (TwoPhaseSolver keeps
+/// it); its bound is the Coulomb cap per cut face, WallFriction::capForce (ProjectionKernels.hpp).
+/// At a steady state gravity + pressure + drag is about 0 (the viscous stresses add no torque but
 /// through the cut faces' Brinkman terms, which the drag includes).
 
 #include "kernels/cfd/Grid.hpp"

@@ -2,8 +2,7 @@
 /// \file SplitLoop.hpp
 /// \brief Loops over the cells of a BoxSplit: the interior with the branch-free stencil (on the
 /// host one launch index per (j, k) row walking i, on devices one per cell), the shell with a flat
-/// policy and the boundary closures. A stencil kernel
-/// is written once as a body with
+/// policy and the boundary closures. A stencil kernel is written once as a body with
 ///
 ///     template <bool Interior> KOKKOS_INLINE_FUNCTION double cell(int i, int j, int k) const;
 ///
@@ -78,8 +77,8 @@ template <class Body> struct InteriorColourCells {
 
 /// Host versions: one launch index per row (j, k), the x range walked inside the functor, so the
 /// compiler sees a plain loop and keeps the body's loop-invariant reads (view strides, operator
-/// flags) in registers; per cell they cost as much as the stencil itself. Rows are a flat range
-/// so that threads split them evenly.
+/// flags) in registers; per cell they cost as much as the stencil itself. Rows are a flat
+/// RangePolicy: a rank-2 MDRange over (j, k) was slower on two threads (perf/README.md).
 struct Rows {
   int i0, i1, j0, nj, k0;
   Rows(int const (&lo)[3], int const (&hi)[3])
@@ -202,14 +201,14 @@ double sumOverSplitCells(ExecutionSpace const& space, std::string const& label,
 template <class ExecutionSpace, class Body>
 void forEachSplitColourCell(ExecutionSpace const& space, std::string const& label,
                             BoxSplit const& split, int colour, Body const& body) {
-  const int i0 = split.interiorLo[0];
-  const int i1 = split.interiorHi[0];
   if (split.interiorSize() > 0) {
     if constexpr (detail::walksRows<ExecutionSpace>) {
       Kokkos::parallel_for(
           label + "::interior", detail::rowPolicy(space, split.interiorLo, split.interiorHi),
           detail::InteriorColourRows<Body>{body, {split.interiorLo, split.interiorHi}, colour});
     } else {
+      const int i0 = split.interiorLo[0];
+      const int i1 = split.interiorHi[0];
       Kokkos::parallel_for(
           label + "::interior",
           gridPolicy(space, {0, split.interiorLo[1], split.interiorLo[2]},

@@ -23,8 +23,7 @@
 ///    adds rho a^n, what gravity and the pressure gradient did to each face's velocity in the
 ///    last step (CarriedAcceleration.hpp; on a cut face only its open share, aperture x a^n, so
 ///    that the pressure exerts no torque about the shell's axis), and u_hat = u* - dt a^n;
-///    otherwise (plain) a^n = 0
-///    and u_hat = u*. The plain form's stresses act on a velocity that lacks the pressure
+///    otherwise (plain) a^n = 0 and u_hat = u*. The plain form's stresses act on a velocity that lacks the pressure
 ///    gradient, so its steady state depends on dt (a 2D drum's wall slip moved by 6 points
 ///    between dt 0.02 and 0.005 s, and an inclined layer's base slips: test_cfd_inclined_layer);
 ///    the incremental form's does not. It is not the default yet: the 30 % drum at 128 x 128
