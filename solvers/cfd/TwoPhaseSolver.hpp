@@ -23,13 +23,14 @@
 ///    adds rho a^n, what gravity and the pressure gradient did to each face's velocity in the
 ///    last step (CarriedAcceleration.hpp; on a cut face only its open share, aperture x a^n, so
 ///    that the pressure exerts no torque about the shell's axis), and u_hat = u* - dt a^n;
-///    otherwise (plain) a^n = 0 and u_hat = u*. The plain form's stresses act on a velocity that lacks the pressure
-///    gradient, so its steady state depends on dt (a 2D drum's wall slip moved by 6 points
-///    between dt 0.02 and 0.005 s, and an inclined layer's base slips: test_cfd_inclined_layer);
-///    the incremental form's does not. It is not the default yet: the 30 % drum at 128 x 128
-///    cells burst at the shell's cut faces without a bed viscosity floor
-///    (rheology.viscosity_min 10 Pa s stops that), and the Kramers kilns fail their validation
-///    with it: their beds stand steeper than the rheology allows (docs/compare.md, last section).
+///    otherwise (plain) a^n = 0 and u_hat = u*. The plain form's stresses act on a velocity that
+///    lacks the pressure gradient, so its steady state depends on dt (a 2D drum's wall slip moved
+///    by 6 points between dt 0.02 and 0.005 s, and an inclined layer's base slips:
+///    test_cfd_inclined_layer); the incremental form's does not. It is not the default yet: with
+///    the default arithmetic edge viscosities its beds stand about 13 deg above their friction
+///    angle (harmonicEdgeViscosity mends that: test_cfd_drum_repose_angle), and without a bed
+///    viscosity floor the inclined Kramers kiln's step collapses (docs/compare.md, last
+///    section).
 /// 5. Projection (CellMultigrid, PCG) for the full pressure with gravity (balanced force):
 ///    u** = u_hat + dt g, div(a / rho grad p) = div(a u**) / dt with a the face apertures,
 ///    u^{n+1} = u** - dt / rho grad p on open faces, a^{n+1} = (u^{n+1} - u_hat) / dt. Gravity
@@ -93,6 +94,7 @@ struct TwoPhaseParameters {
   double settlingVelocity = 0.5;      ///< grains falling through the gas [m/s] (drift flux)
   bool coulombWall = true;            ///< Coulomb friction on the cut faces (else no-slip)
   bool incrementalProjection = false; ///< carry the last step's acceleration (step 4)
+  bool harmonicEdgeViscosity = false; ///< shear stress viscosities (ViscousOperator.hpp)
   bool energy = false;                ///< solve the energy equation (temperature())
   ThermalParameters thermal;
   double pressureTolerance = 1e-11; ///< relative residual of the pressure solve
@@ -421,6 +423,7 @@ public:
     MultigridOptions vopt;
     vopt.tolerance = _params.viscousTolerance;
     vopt.maxIterations = _params.maxIterations;
+    vopt.harmonicEdgeViscosity = _params.harmonicEdgeViscosity;
     // the open ends' normal velocities are data of the solve: u^n's (inflow given, outflow
     // from the last projection)
     copyEndNodes(_u.comp[2], _uStar.comp[2]);

@@ -235,7 +235,9 @@ private:
           }
         }
       }
-      edgeViscosities(_space, g, periodic, level.op.mu, level.op.muEdge, level.op.open);
+      edgeViscosities(_space, g, periodic, level.op.mu, level.op.muEdge, level.op.open,
+                      _options.harmonicEdgeViscosity ? EdgeViscosity::Harmonic
+                                                     : EdgeViscosity::Arithmetic);
       _levels.push_back(level);
     }
   }
