@@ -6,9 +6,8 @@
 /// face is coupled to itself through the normal stress 2 mu du_c/dx_c (mu at the cells beside
 /// the face) and the shear stresses mu (du_c/dx_a + du_a/dx_c) (mu on the cell edges, the
 /// arithmetic or harmonic mean of the four cells around each edge, EdgeViscosity); the du_a/dx_c
-/// parts couple the components. The
-/// discretisation is symmetric positive definite (symmetric positive semi-definite when alpha = 0
-/// and every axis is periodic).
+/// parts couple the components. The discretisation is symmetric positive definite (symmetric
+/// positive semi-definite when alpha = 0 and every axis is periodic).
 ///
 /// Boundaries: tangential components are no-slip with the side's velocity (ghost 2 V - u), the
 /// normal component is given on the boundary faces (stored in the field's boundary nodes; 0 on
