@@ -49,7 +49,8 @@ template <class Solver> double surfaceAngleDeg(Solver const& solver, double radi
       const double below = phi(i + gh, j + gh, gz), above = phi(i + gh, j + 1 + gh, gz);
       if (below > half) {
         xs.push_back(x);
-        ys.push_back(g.coordinate(Staggering::Cell, 1, j) + (below - half) / (below - above) * g.hy);
+        ys.push_back(g.coordinate(Staggering::Cell, 1, j) +
+                     (below - half) / (below - above) * g.hy);
         break;
       }
     }
