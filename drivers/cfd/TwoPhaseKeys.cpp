@@ -83,6 +83,13 @@ void addTwoPhaseKeys(cases::CaseSchema& s) {
            "harmonic: cells in series, so a flowing layer can shear against the plug below it; "
            "with arithmetic an incremental bed stands about 13 deg above its friction angle "
            "(docs/compare.md). The shipped cases were run with arithmetic");
+  s.choice("numerics.shell_gas", {"no_slip", "slip"})
+      .defaultsTo("no_slip")
+      .doc("The gas at the shell. no_slip: the shell holds gas as a wall holds a fluid, and a "
+           "cut face holds the Coulomb cap from a solids fraction of phi_max / 10 on (blended "
+           "below); slip (before 2026-12-04): the Coulomb cap, zero without bed, let the gas "
+           "slide freely, and with the incremental projection a gas jet ran up the inclined "
+           "kiln's shell (docs/compare.md)");
   const char* const solves[][3] = {{"momentum", "1e-9", "momentum (viscous)"},
                                    {"pressure", "1e-11", "pressure"}};
   for (auto const& solve : solves) {
@@ -105,6 +112,7 @@ std::string readTwoPhaseKeys(const cases::CaseFile& c, TwoPhaseParameters& p) {
   p.dtMax = c.real("numerics.dt_max");
   p.incrementalProjection = c.string("numerics.projection") == "incremental";
   p.harmonicEdgeViscosity = c.string("numerics.edge_viscosity") == "harmonic";
+  p.shellHoldsGas = c.string("numerics.shell_gas") == "no_slip";
   p.viscousTolerance = c.real("numerics.momentum_tolerance");
   p.pressureTolerance = c.real("numerics.pressure_tolerance");
   GranularRheology& r = p.rheology;

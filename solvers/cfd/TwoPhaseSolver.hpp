@@ -80,6 +80,10 @@
 
 namespace hikiln::cfd {
 
+/// With TwoPhaseParameters::shellHoldsGas, a cut face is all gas (held by the shell) without
+/// solids and all bed (Coulomb cap) from this share of phi_max on (DiluteFaces).
+inline constexpr double gasShellShare = 0.1;
+
 /// \brief Physical and numerical parameters of the two-phase model.
 struct TwoPhaseParameters {
   double solidDensity = 2500.0; ///< grain material density [kg/m3] (bed density phi x this)
@@ -95,6 +99,7 @@ struct TwoPhaseParameters {
   bool coulombWall = true;            ///< Coulomb friction on the cut faces (else no-slip)
   bool incrementalProjection = false; ///< carry the last step's acceleration (step 4)
   bool harmonicEdgeViscosity = false; ///< shear stress viscosities (ViscousOperator.hpp)
+  bool shellHoldsGas = true;          ///< the shell holds gas, uncapped (gasShellShare)
   bool energy = false;                ///< solve the energy equation (temperature())
   ThermalParameters thermal;
   double pressureTolerance = 1e-11; ///< relative residual of the pressure solve
@@ -710,6 +715,10 @@ private:
     WallFriction friction;
     friction.enabled = coulombWallOn();
     friction.muWall = _params.rheology.muWall;
+    friction.dilute.gasDensity = _params.gasDensity;
+    friction.dilute.solidDensity = _params.solidDensity;
+    friction.dilute.dilutePhi =
+        _params.shellHoldsGas ? gasShellShare * _params.rheology.phiMax : 0.0;
     return friction;
   }
 
