@@ -9,7 +9,6 @@
 /// Faces of axis a between cells L (below) and R (above); pressure gradients (p_R - p_L) / h_a
 /// only through open faces (aperture > 0); at a closed face the wall forcing holds the velocity.
 
-#include "kernels/cfd/DiluteFaces.hpp"
 #include "kernels/cfd/Grid.hpp"
 #include "kernels/cfd/ShellGeometry.hpp"
 #include "kernels/cfd/ViscousOperator.hpp"
@@ -78,13 +77,25 @@ void faceDensities(ExecutionSpace const& space, Grid const& grid, bool const (&p
 /// `dilutePhi` or more is capped, and in between the two forcings are blended by the solids
 /// fraction. Without that the freeboard gas slid freely along the shell: in the inclined kiln
 /// (kramers-inclined.yaml, incremental projection, harmonic edge viscosities) a jet of gas
-/// ran up the shell's cut cells along the whole kiln and sped up steadily (2.5 m/s at 30 s)
+/// ran up the shell's cut cells along the whole kiln and sped up steadily (2.4 m/s at 30 s)
 /// until the step collapsed.
 struct WallFriction {
   bool enabled = false;
   double muWall = 0.0;
-  double slipFloor = 1e-3; ///< m/s: regularises the drag at zero slip (stick below)
-  DiluteFaces dilute;      ///< the gas share of a face, held without the cap
+  double slipFloor = 1e-3;   ///< m/s: regularises the drag at zero slip (stick below)
+  double gasDensity = 0.0;   ///< [kg/m3], with solidDensity: a face's solids fraction
+  double solidDensity = 0.0; ///< [kg/m3]
+  double dilutePhi = 0.0;    ///< solids fraction from which a face is all bed; 0: every face is
+
+  /// \brief The share of a face (mixture density rhoFace) that the shell holds as gas:
+  /// 1 - phi / dilutePhi clamped to [0, 1]; 0 everywhere when dilutePhi is 0.
+  KOKKOS_INLINE_FUNCTION double gasShare(double rhoFace) const {
+    if (!(dilutePhi > 0.0)) {
+      return 0.0;
+    }
+    const double phi = (rhoFace - gasDensity) / (solidDensity - gasDensity);
+    return math::fmin(1.0, math::fmax(0.0, 1.0 - phi / dilutePhi));
+  }
 
   /// \brief The largest wall force on one cut face of component c per unit depth,
   /// mu_wall sigma_n h: sigma_n ~ the larger bed pressure of the two cells beside the face, h the
@@ -139,7 +150,7 @@ void momentumPredictor(ExecutionSpace const& space, CutCells<MemorySpace> const&
           q[c] -= 1;
           const double slip = math::fmax(math::fabs(here - wall), friction.slipFloor);
           const double cap = friction.capForce(grid, c, pBed(I, J, K), pBed(q[0], q[1], q[2]));
-          const double gas = friction.dilute.gasShare(rf);
+          const double gas = friction.gasShare(rf);
           forcing = gas * forcing + (1.0 - gas) * math::fmin(forcing, cap / (h * h * slip));
         }
         alpha(I, J, K) = rf / dt + forcing;

@@ -10,7 +10,7 @@
 /// projection applies them to the whole face. The drag is (alpha - rho_face / dt)(u_wall - u*) with
 /// the alpha and the predicted velocity u* of the last momentum predictor (TwoPhaseSolver keeps
 /// it); its bound is the Coulomb cap per cut face, WallFriction::capForce (ProjectionKernels.hpp).
-/// The drag on the gas the shell holds (WallFriction::dilute) is counted but not bounded; in a
+/// The drag on the gas the shell holds (WallFriction::gasShare) is counted but not bounded; in a
 /// drum it is small (the gas is light and turns with the shell).
 /// At a steady state gravity + pressure + drag is about 0 (the viscous stresses add no torque but
 /// through the cut faces' Brinkman terms, which the drag includes).

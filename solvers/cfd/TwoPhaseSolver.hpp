@@ -81,7 +81,7 @@
 namespace hikiln::cfd {
 
 /// With TwoPhaseParameters::shellHoldsGas, a cut face is all gas (held by the shell) without
-/// solids and all bed (Coulomb cap) from this share of phi_max on (DiluteFaces).
+/// solids and all bed (Coulomb cap) from this share of phi_max on (WallFriction::gasShare).
 inline constexpr double gasShellShare = 0.1;
 
 /// \brief Physical and numerical parameters of the two-phase model.
@@ -715,10 +715,9 @@ private:
     WallFriction friction;
     friction.enabled = coulombWallOn();
     friction.muWall = _params.rheology.muWall;
-    friction.dilute.gasDensity = _params.gasDensity;
-    friction.dilute.solidDensity = _params.solidDensity;
-    friction.dilute.dilutePhi =
-        _params.shellHoldsGas ? gasShellShare * _params.rheology.phiMax : 0.0;
+    friction.gasDensity = _params.gasDensity;
+    friction.solidDensity = _params.solidDensity;
+    friction.dilutePhi = _params.shellHoldsGas ? gasShellShare * _params.rheology.phiMax : 0.0;
     return friction;
   }
 
