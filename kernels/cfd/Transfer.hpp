@@ -229,15 +229,25 @@ KOKKOS_INLINE_FUNCTION int averageWeights(TransferAxis const& t, NodeAverage mod
 
 /// \brief coarse = the average of fine over each coarse entry (every entry of the coarse level,
 /// boundary nodes included); for coefficients, which are not corrections.
+/// With `fineOpen` (face coefficients beside a wall): the average over the children whose
+/// fineOpen > 0 only, or over all of them where every child is closed; `coarseOpen` (if given)
+/// = 1 where some child is open, else 0 (the fineOpen of the next coarsening). Why: a closed
+/// face's coefficient is the wall's penalty, orders of magnitude above the rest. Averaged in, it
+/// holds a coarse face that is partly open, so the coarse levels see the shell one coarse cell
+/// further in and stuck, and cannot correct a bed that slides along it (ViscousMultigrid).
 template <class ExecutionSpace, class MemorySpace>
 void averageDown(ExecutionSpace const& space, Transfer const& transfer, NodeAverage mode,
-                 Field<MemorySpace> const& fine, Field<MemorySpace> const& coarse) {
+                 Field<MemorySpace> const& fine, Field<MemorySpace> const& coarse,
+                 Field<MemorySpace> const& fineOpen = Field<MemorySpace>(),
+                 Field<MemorySpace> const& coarseOpen = Field<MemorySpace>()) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::averageDown: fields not accessible from the execution space");
   const TransferAxis tx = transfer.axis[0], ty = transfer.axis[1], tz = transfer.axis[2];
   const GhostOffsets fo = transfer.fineOffsets, co = transfer.coarseOffsets;
   const int hi[3] = {tx.coarse.n + (tx.coarse.node ? 1 : 0), ty.coarse.n + (ty.coarse.node ? 1 : 0),
                      tz.coarse.n + (tz.coarse.node && tz.coarse.active ? 1 : 0)};
+  const bool masked = fineOpen.extent(0) > 0;
+  const bool marks = coarseOpen.extent(0) > 0;
   Kokkos::parallel_for(
       "hikiln::cfd::averageDown", gridPolicy(space, {0, 0, 0}, hi),
       KOKKOS_LAMBDA(const int i, const int j, const int k) {
@@ -246,15 +256,25 @@ void averageDown(ExecutionSpace const& space, Transfer const& transfer, NodeAver
         const int nx = averageWeights(tx, mode, i, ix, wx);
         const int ny = averageWeights(ty, mode, j, iy, wy);
         const int nz = averageWeights(tz, mode, k, iz, wz);
-        double sum = 0.0;
+        double sum = 0.0, openSum = 0.0, openWeight = 0.0;
         for (int c = 0; c < nz; ++c) {
           for (int b = 0; b < ny; ++b) {
             for (int a = 0; a < nx; ++a) {
-              sum += wx[a] * wy[b] * wz[c] * fine(ix[a] + fo.x, iy[b] + fo.y, iz[c] + fo.z);
+              const int f[3] = {ix[a] + fo.x, iy[b] + fo.y, iz[c] + fo.z};
+              const double term = wx[a] * wy[b] * wz[c] * fine(f[0], f[1], f[2]);
+              sum += term;
+              if (masked && fineOpen(f[0], f[1], f[2]) > 0.0) {
+                openSum += term;
+                openWeight += wx[a] * wy[b] * wz[c];
+              }
             }
           }
         }
-        coarse(i + co.x, j + co.y, k + co.z) = sum;
+        const bool open = openWeight > 0.0;
+        coarse(i + co.x, j + co.y, k + co.z) = open ? openSum / openWeight : sum;
+        if (marks) {
+          coarseOpen(i + co.x, j + co.y, k + co.z) = open ? 1.0 : 0.0;
+        }
       });
 }
 

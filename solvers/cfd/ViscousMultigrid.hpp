@@ -7,7 +7,8 @@
 /// preconditioner of conjugate gradients (the operator is symmetric positive definite).
 ///
 /// Design (as CellMultigrid, per component):
-/// - the same grid hierarchy; per level alpha is full-weighted onto the coarse faces, mu
+/// - the same grid hierarchy; per level alpha is full-weighted onto the coarse faces (with
+///   `open`, over the open children only: averageDown says why), mu
 ///   averaged over the children, and the edge viscosities recomputed from the coarse mu;
 /// - smoother: red-black Gauss-Seidel one component at a time with the others fixed
 ///   (u red, u black, v red, v black, ... before the coarse correction, the reverse after, so
@@ -196,6 +197,12 @@ private:
     for (int a = 0; a < numComps; ++a) {
       _singular = _singular && periodic[a];
     }
+    // the open faces of the level above, for alpha's coarsening (averageDown)
+    const bool overOpen = hasAlpha && open.comp[0].extent(0) > 0 && _options.alphaOverOpenFaces;
+    field_type openBelow[3];
+    for (int c = 0; c < numComps && overOpen; ++c) {
+      openBelow[c] = open.comp[c];
+    }
     for (std::size_t l = 0; l < geometry.size(); ++l) {
       Level level;
       Grid const& g = geometry[l].grid;
@@ -230,8 +237,16 @@ private:
           for (int c = 0; c < numComps; ++c) {
             level.op.alpha[c] =
                 makeField(_space, g, faceStaggering(c), "hikiln::cfd::viscous::alpha");
-            averageDown(_space, level.fromFiner[c], NodeAverage::FullWeighting, finer.op.alpha[c],
-                        level.op.alpha[c]);
+            if (overOpen) {
+              const field_type coarseOpen =
+                  makeField(_space, g, faceStaggering(c), "hikiln::cfd::viscous::open");
+              averageDown(_space, level.fromFiner[c], NodeAverage::FullWeighting, finer.op.alpha[c],
+                          level.op.alpha[c], openBelow[c], coarseOpen);
+              openBelow[c] = coarseOpen;
+            } else {
+              averageDown(_space, level.fromFiner[c], NodeAverage::FullWeighting, finer.op.alpha[c],
+                          level.op.alpha[c]);
+            }
           }
         }
       }
