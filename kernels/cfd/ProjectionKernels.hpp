@@ -85,7 +85,8 @@ struct WallFriction {
   double slipFloor = 1e-3;   ///< m/s: regularises the drag at zero slip (stick below)
   double gasDensity = 0.0;   ///< [kg/m3], with solidDensity: a face's solids fraction
   double solidDensity = 0.0; ///< [kg/m3]
-  double dilutePhi = 0.0;    ///< solids fraction from which a face is all bed; 0: every face is
+  double dilutePhi = 0.0;    ///< solids fraction from which a face is all bed; 0: every cut face is
+                             ///< bed (shell_gas slip)
 
   /// \brief The share of a face (mixture density rhoFace) that the shell holds as gas:
   /// 1 - phi / dilutePhi clamped to [0, 1]; 0 everywhere when dilutePhi is 0.

@@ -261,11 +261,12 @@ void averageDown(ExecutionSpace const& space, Transfer const& transfer, NodeAver
           for (int b = 0; b < ny; ++b) {
             for (int a = 0; a < nx; ++a) {
               const int f[3] = {ix[a] + fo.x, iy[b] + fo.y, iz[c] + fo.z};
-              const double term = wx[a] * wy[b] * wz[c] * fine(f[0], f[1], f[2]);
+              const double w = wx[a] * wy[b] * wz[c];
+              const double term = w * fine(f[0], f[1], f[2]);
               sum += term;
               if (masked && fineOpen(f[0], f[1], f[2]) > 0.0) {
                 openSum += term;
-                openWeight += wx[a] * wy[b] * wz[c];
+                openWeight += w;
               }
             }
           }

@@ -34,8 +34,6 @@ struct MultigridOptions {
   double tolerance = 1e-10;              ///< stop at ||r|| <= tolerance * ||r_0||
   int maxIterations = 100;               ///< V-cycles or PCG iterations
   bool harmonicEdgeViscosity = false;    ///< viscous solves: EdgeViscosity::Harmonic on every level
-  bool alphaOverOpenFaces = true; ///< viscous solves with `open`: alpha's coarse faces averaged
-                                  ///< over the open ones (averageDown)
 };
 
 /// \brief What an iterative solve did: residual 2-norms over the unknowns.

@@ -197,11 +197,11 @@ private:
     for (int a = 0; a < numComps; ++a) {
       _singular = _singular && periodic[a];
     }
-    // the open faces of the level above, for alpha's coarsening (averageDown)
-    const bool overOpen = hasAlpha && open.comp[0].extent(0) > 0 && _options.alphaOverOpenFaces;
-    field_type openBelow[3];
+    // with `open`, alpha is coarsened over the open faces of the next finer level (averageDown)
+    const bool overOpen = hasAlpha && open.comp[0].extent(0) > 0;
+    field_type finerOpen[3];
     for (int c = 0; c < numComps && overOpen; ++c) {
-      openBelow[c] = open.comp[c];
+      finerOpen[c] = open.comp[c];
     }
     for (std::size_t l = 0; l < geometry.size(); ++l) {
       Level level;
@@ -241,8 +241,8 @@ private:
               const field_type coarseOpen =
                   makeField(_space, g, faceStaggering(c), "hikiln::cfd::viscous::open");
               averageDown(_space, level.fromFiner[c], NodeAverage::FullWeighting, finer.op.alpha[c],
-                          level.op.alpha[c], openBelow[c], coarseOpen);
-              openBelow[c] = coarseOpen;
+                          level.op.alpha[c], finerOpen[c], coarseOpen);
+              finerOpen[c] = coarseOpen;
             } else {
               averageDown(_space, level.fromFiner[c], NodeAverage::FullWeighting, finer.op.alpha[c],
                           level.op.alpha[c]);

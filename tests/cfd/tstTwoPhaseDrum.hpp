@@ -209,8 +209,8 @@ TEST(TEST_CATEGORY, two_phase_momentum_iterations_independent_of_grid) {
   std::cout << "momentum solve, mean iterations per step: " << medium << " (64 cells), " << fine
             << " (128)\n";
   // measured 20.1 and 21.0 (15.3 at 32 cells). With the shell's penalty averaged into the
-  // coarse faces (MultigridOptions::alphaOverOpenFaces off) 36.4 and 45.4, and 57 at 256 cells
-  // in the shipped 2 m drum: the coarse levels held the sliding bed (averageDown in Transfer.hpp)
+  // coarse faces (the code before 829196c) 36.4 and 45.4, and 57 at 256 cells in the shipped
+  // 2 m drum: the coarse levels held the sliding bed (averageDown in Transfer.hpp)
   EXPECT_LT(fine - medium, 3.0);
   EXPECT_LT(fine, 30.0);
 }
