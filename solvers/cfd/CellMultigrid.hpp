@@ -8,9 +8,6 @@
 /// - Levels from coarsenGrids (factor 2 per axis where possible, semi-coarsening for flat
 ///   domains); coefficients coarsened by averages: alpha over the 2^d children, beta over the
 ///   fine faces that make up a coarse face (the coarse operator is rediscretised, not Galerkin).
-///   With an `open` mask (cut cells: the capacity) alpha is averaged over the open children
-///   only, so the alpha that just decouples the cells outside a shell does not reach the coarse
-///   cells that straddle it (setupLevels).
 /// - V(pre, post)-cycle: red-black Gauss-Seidel (red then black before, black then red after),
 ///   residual, restriction by the mean of the children, piecewise-constant interpolation of the
 ///   correction (options: linear, P^T restriction; see Transfer.hpp for the measured reasons),
@@ -56,15 +53,12 @@ public:
   /// for alpha = 0) and face coefficients beta (FaceX, FaceY, FaceZ; beta[2] unused in 2D) on
   /// grid with boundary conditions bc. The fields are referenced, not copied: change them and
   /// build a new solver. Throws if the coarsest level is too large for the direct solve.
-  /// With `open` (> 0 in the cells that belong to the problem, e.g. a cut-cell capacity), alpha
-  /// is coarsened over the open children only: see setupLevels.
   CellMultigrid(ExecutionSpace const& space, Grid const& grid, ScalarBoundaries const& bc,
                 field_type const& alpha, field_type const (&beta)[3],
-                MultigridOptions const& options = MultigridOptions(),
-                field_type const& open = field_type())
+                MultigridOptions const& options = MultigridOptions())
       : _space(space), _bc(bc), _options(options) {
     checkBoundaries(grid, bc);
-    setupLevels(grid, alpha, beta, open);
+    setupLevels(grid, alpha, beta);
     setupCoarseSolve();
   }
 
@@ -173,12 +167,7 @@ private:
     Transfer fromFiner; ///< transfer between the next finer level and this one
   };
 
-  /// Coefficients of the coarse levels (see the file comment). With `open`, a coarse cell takes
-  /// the mean of alpha over its open children and is open when one of them is: the alpha that
-  /// only decouples the cells outside a shell (they have no open face) then stays out of the
-  /// coarse cells that straddle the shell, where it would be a sink the fine problem lacks.
-  void setupLevels(Grid const& grid, field_type const& alpha, field_type const (&beta)[3],
-                   field_type const& open) {
+  void setupLevels(Grid const& grid, field_type const& alpha, field_type const (&beta)[3]) {
     const bool periodic[3] = {_bc.periodic(0), _bc.periodic(1), _bc.periodic(2)};
     const std::vector<LevelGeometry> geometry = coarsenGrids(grid, periodic, _options.coarsening);
     const bool hasAlpha = alpha.extent(0) > 0;
@@ -187,7 +176,6 @@ private:
       _singular = _singular && _bc.kind[side] != BoundaryKind::Value;
     }
     const int numAxes = grid.is3D() ? 3 : 2;
-    field_type finerOpen = hasAlpha ? open : field_type();
     for (std::size_t l = 0; l < geometry.size(); ++l) {
       Level level;
       Grid const& g = geometry[l].grid;
@@ -209,13 +197,7 @@ private:
       level.fromFiner = makeTransfer(finer.op, level.op, geometry[l].ratio, _options);
       if (hasAlpha) {
         level.op.alpha = makeField(_space, g, Staggering::Cell, "hikiln::cfd::mg::alpha");
-        const field_type coarseOpen =
-            finerOpen.extent(0) > 0
-                ? makeField(_space, g, Staggering::Cell, "hikiln::cfd::mg::open")
-                : field_type();
-        averageDown(_space, level.fromFiner, NodeAverage::Inject, finer.op.alpha, level.op.alpha,
-                    finerOpen, coarseOpen);
-        finerOpen = coarseOpen;
+        averageDown(_space, level.fromFiner, NodeAverage::Inject, finer.op.alpha, level.op.alpha);
       }
       for (int a = 0; a < numAxes; ++a) {
         level.op.beta[a] = makeField(_space, g, faceStaggering(a), "hikiln::cfd::mg::beta");
