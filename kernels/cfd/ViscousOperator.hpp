@@ -81,6 +81,80 @@ template <class MemorySpace> struct ViscousOperator {
   KOKKOS_INLINE_FUNCTION bool masksClosedFaces() const { return open.comp[0].extent(0) > 0; }
 };
 
+/// \brief The part of viscousStencil along axis A (a compile-time axis, so that the index
+/// arithmetic and the `A == C` choice fold away; as a loop over the axes GCC kept the axis in a
+/// register and the index arrays on the stack, perf/README.md).
+template <bool Interior, int C, int A, class MemorySpace>
+KOKKOS_FORCEINLINE_FUNCTION void
+viscousStencilAxis(ViscousOperator<MemorySpace> const& op, GridScales const& scale,
+                   VelocityFields<MemorySpace> const& vel, int i, int j, int k, bool affine,
+                   double& diag, double& rest) {
+  constexpr int c = C;
+  constexpr int a = A;
+  const int off[3] = {op.grid.ghost, op.grid.ghost, op.grid.ghostZ()};
+  const int idx[3] = {i, j, k};
+  const auto& x = vel.comp[c];
+  const AxisClosure& ax = op.axis[c][a];
+  double cu, cd;
+  if constexpr (a == c) {
+    // normal stress: 2 mu in the cells above and below the face
+    int cell[3] = {i, j, k};
+    cell[a] = idx[a];
+    cu = 2.0 * op.mu(cell[0] + off[0], cell[1] + off[1], cell[2] + off[2]);
+    cell[a] = wrapOf<Interior>(ax, idx[a] - 1);
+    cd = 2.0 * op.mu(cell[0] + off[0], cell[1] + off[1], cell[2] + off[2]);
+  } else {
+    // shear stress on the (c, a) edges above and below along a
+    const auto& me = op.muEdge[edgeSlot(a < c ? a : c, a < c ? c : a)];
+    int e[3] = {i, j, k};
+    e[a] = idx[a] + 1;
+    cu = me(e[0] + off[0], e[1] + off[1], e[2] + off[2]);
+    e[a] = idx[a];
+    cd = me(e[0] + off[0], e[1] + off[1], e[2] + off[2]);
+    // coupling: d u_a / d x_c on those edges (u_a is node-centred along a, cell-centred along c)
+    const auto& ua = vel.comp[a];
+    const AxisClosure& alongA = op.axis[a][a];
+    const AxisClosure& alongC = op.axis[a][c];
+    int p[3] = {i, j, k};
+    const int cAbove = idx[c];
+    const int cBelow = wrapOf<Interior>(alongC, idx[c] - 1);
+    p[a] = wrapOf<Interior>(alongA, idx[a] + 1);
+    p[c] = cAbove;
+    const double upHigh = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
+    p[c] = cBelow;
+    const double upLow = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
+    p[a] = idx[a];
+    p[c] = cAbove;
+    const double dnHigh = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
+    p[c] = cBelow;
+    const double dnLow = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
+    rest += (cu * (upHigh - upLow) - cd * (dnHigh - dnLow)) * scale.invMixed[a][c];
+  }
+  const Neighbour up = upOf<Interior>(ax, idx[a], affine);
+  const Neighbour dn = downOf<Interior>(ax, idx[a], affine);
+  if constexpr (a == c) {
+    if (op.masksClosedFaces()) {
+      // the normal strain of the cell above (below) reads this face and the one above (below)
+      const auto& open = op.open.comp[c];
+      int q[3] = {i + off[0], j + off[1], k + off[2]};
+      const bool here = open(q[0], q[1], q[2]) > 0.0;
+      q[a] = up.index + off[a];
+      cu = here && open(q[0], q[1], q[2]) > 0.0 ? cu : 0.0;
+      q[a] = dn.index + off[a];
+      cd = here && open(q[0], q[1], q[2]) > 0.0 ? cd : 0.0;
+    }
+  }
+  const double inv2 = scale.inv2[a];
+  cu *= inv2;
+  cd *= inv2;
+  diag += cu * up.diag + cd * dn.diag;
+  int q[3] = {i, j, k};
+  q[a] = up.index;
+  rest += cu * (up.off * x(q[0] + off[0], q[1] + off[1], q[2] + off[2]) + up.lift);
+  q[a] = dn.index;
+  rest += cd * (dn.off * x(q[0] + off[0], q[1] + off[1], q[2] + off[2]) + dn.lift);
+}
+
 /// \brief Splits (A u)_C at unknown (i, j, k) of component C (Dims axes) into diag * u_c(i, j, k) -
 /// rest: rest holds the neighbours of the same component, the other components (shear coupling)
 /// and, when affine, the boundary values. Interior: no neighbour, viscosity or coupling read needs
@@ -92,70 +166,14 @@ KOKKOS_FORCEINLINE_FUNCTION void
 viscousStencil(ViscousOperator<MemorySpace> const& op, GridScales const& scale,
                VelocityFields<MemorySpace> const& vel, int i, int j, int k, bool affine,
                double& diag, double& rest) {
-  constexpr int c = C;
-  const int off[3] = {op.grid.ghost, op.grid.ghost, op.grid.ghostZ()};
-  const int idx[3] = {i, j, k};
-  const auto& x = vel.comp[c];
-  diag = op.hasAlpha() ? op.alpha[c](i + off[0], j + off[1], k + off[2]) : 0.0;
+  diag =
+      op.hasAlpha() ? op.alpha[C](i + op.grid.ghost, j + op.grid.ghost, k + op.grid.ghostZ()) : 0.0;
   rest = 0.0;
-  for (int a = 0; a < Dims; ++a) {
-    const AxisClosure& ax = op.axis[c][a];
-    double cu, cd;
-    if (a == c) {
-      // normal stress: 2 mu in the cells above and below the face
-      int cell[3] = {i, j, k};
-      cell[a] = idx[a];
-      cu = 2.0 * op.mu(cell[0] + off[0], cell[1] + off[1], cell[2] + off[2]);
-      cell[a] = wrapOf<Interior>(ax, idx[a] - 1);
-      cd = 2.0 * op.mu(cell[0] + off[0], cell[1] + off[1], cell[2] + off[2]);
-    } else {
-      // shear stress on the (c, a) edges above and below along a
-      const auto& me = op.muEdge[edgeSlot(a < c ? a : c, a < c ? c : a)];
-      int e[3] = {i, j, k};
-      e[a] = idx[a] + 1;
-      cu = me(e[0] + off[0], e[1] + off[1], e[2] + off[2]);
-      e[a] = idx[a];
-      cd = me(e[0] + off[0], e[1] + off[1], e[2] + off[2]);
-      // coupling: d u_a / d x_c on those edges (u_a is node-centred along a, cell-centred along c)
-      const auto& ua = vel.comp[a];
-      const AxisClosure& alongA = op.axis[a][a];
-      const AxisClosure& alongC = op.axis[a][c];
-      int p[3] = {i, j, k};
-      const int cAbove = idx[c];
-      const int cBelow = wrapOf<Interior>(alongC, idx[c] - 1);
-      p[a] = wrapOf<Interior>(alongA, idx[a] + 1);
-      p[c] = cAbove;
-      const double upHigh = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
-      p[c] = cBelow;
-      const double upLow = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
-      p[a] = idx[a];
-      p[c] = cAbove;
-      const double dnHigh = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
-      p[c] = cBelow;
-      const double dnLow = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
-      rest += (cu * (upHigh - upLow) - cd * (dnHigh - dnLow)) * scale.invMixed[a][c];
-    }
-    const Neighbour up = upOf<Interior>(ax, idx[a], affine);
-    const Neighbour dn = downOf<Interior>(ax, idx[a], affine);
-    if (a == c && op.masksClosedFaces()) {
-      // the normal strain of the cell above (below) reads this face and the one above (below)
-      const auto& open = op.open.comp[c];
-      int q[3] = {i + off[0], j + off[1], k + off[2]};
-      const bool here = open(q[0], q[1], q[2]) > 0.0;
-      q[a] = up.index + off[a];
-      cu = here && open(q[0], q[1], q[2]) > 0.0 ? cu : 0.0;
-      q[a] = dn.index + off[a];
-      cd = here && open(q[0], q[1], q[2]) > 0.0 ? cd : 0.0;
-    }
-    const double inv2 = scale.inv2[a];
-    cu *= inv2;
-    cd *= inv2;
-    diag += cu * up.diag + cd * dn.diag;
-    int q[3] = {i, j, k};
-    q[a] = up.index;
-    rest += cu * (up.off * x(q[0] + off[0], q[1] + off[1], q[2] + off[2]) + up.lift);
-    q[a] = dn.index;
-    rest += cd * (dn.off * x(q[0] + off[0], q[1] + off[1], q[2] + off[2]) + dn.lift);
+  // the axes in order, as the sums have always been taken (bitwise the same results)
+  viscousStencilAxis<Interior, C, 0>(op, scale, vel, i, j, k, affine, diag, rest);
+  viscousStencilAxis<Interior, C, 1>(op, scale, vel, i, j, k, affine, diag, rest);
+  if constexpr (Dims == 3) {
+    viscousStencilAxis<Interior, C, 2>(op, scale, vel, i, j, k, affine, diag, rest);
   }
 }
 
