@@ -19,6 +19,7 @@
 
 #include "kernels/cfd/AxisClosure.hpp"
 #include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/SplitLoop.hpp"
 
 #include <Kokkos_Core.hpp>
 
@@ -118,35 +119,120 @@ KOKKOS_INLINE_FUNCTION int restrictionWeights(TransferAxis const& t, int c, int 
   return count;
 }
 
+namespace detail {
+
+/// The two transfers as one kernel: Prolong (fine += P coarse, up to 2 weights per axis) or
+/// restrict (coarse = R fine, up to 4).
+template <bool Prolong> struct TransferKind {
+  static constexpr int N = Prolong ? 2 : 4;
+  KOKKOS_INLINE_FUNCTION static int weights(TransferAxis const& t, int target, int (&index)[N],
+                                            double (&weight)[N]) {
+    if constexpr (Prolong) {
+      return prolongationWeights(t, target, index, weight);
+    } else {
+      return restrictionWeights(t, target, index, weight);
+    }
+  }
+};
+
+/// Weights along y and z of one target row (j, k).
+template <bool Prolong> struct RowWeights {
+  static constexpr int N = TransferKind<Prolong>::N;
+  int iy[N], iz[N];
+  double wy[N], wz[N];
+  int ny, nz;
+  KOKKOS_INLINE_FUNCTION RowWeights(TransferAxis const& ty, TransferAxis const& tz, int j, int k)
+      : ny(TransferKind<Prolong>::weights(ty, j, iy, wy)),
+        nz(TransferKind<Prolong>::weights(tz, k, iz, wz)) {}
+};
+
+/// The transfer from source (offsets so) to target (offsets to) at the target unknowns
+/// i0 <= i < i1 of row (j, k): the tensor-product sum over c, b, a (in that order, so that
+/// every loop form gives the same bits).
+template <bool Prolong, class MemorySpace> struct TransferBody {
+  static constexpr int N = TransferKind<Prolong>::N;
+  TransferAxis tx, ty, tz;
+  GhostOffsets so, to;
+  Field<MemorySpace> source, target;
+  KOKKOS_FORCEINLINE_FUNCTION void row(int i0, int i1, int j, int k) const {
+    const RowWeights<Prolong> r(ty, tz, j, k);
+    for (int i = i0; i < i1; ++i) {
+      int ix[N];
+      double wx[N];
+      const int nx = TransferKind<Prolong>::weights(tx, i, ix, wx);
+      double sum = 0.0;
+      for (int c = 0; c < r.nz; ++c) {
+        for (int b = 0; b < r.ny; ++b) {
+          const double wyz = r.wy[b] * r.wz[c];
+          for (int a = 0; a < nx; ++a) {
+            sum += wx[a] * wyz * source(ix[a] + so.x, r.iy[b] + so.y, r.iz[c] + so.z);
+          }
+        }
+      }
+      if constexpr (Prolong) {
+        target(i + to.x, j + to.y, k + to.z) += sum;
+      } else {
+        target(i + to.x, j + to.y, k + to.z) = sum;
+      }
+    }
+  }
+};
+
+/// Host spaces: one launch index per target row, whose y and z weights are taken once (per
+/// unknown they cost more than the sum itself; perf/README.md).
+template <class Body> struct TransferRows {
+  Body body;
+  Rows rows;
+  KOKKOS_INLINE_FUNCTION void operator()(const int row) const {
+    body.row(rows.i0, rows.i1, rows.j(row), rows.k(row));
+  }
+};
+
+template <class Body> struct TransferCells {
+  Body body;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, const int j, const int k) const {
+    body.row(i, i + 1, j, k);
+  }
+};
+
+/// The transfer on every target unknown (fine for Prolong, else coarse).
+template <bool Prolong, class ExecutionSpace, class MemorySpace>
+void transfer(ExecutionSpace const& space, char const* label, Transfer const& t,
+              Field<MemorySpace> const& source, Field<MemorySpace> const& target) {
+  const TransferAxis tx = t.axis[0], ty = t.axis[1], tz = t.axis[2];
+  const AxisClosure* targetAxis[3] = {Prolong ? &tx.fine : &tx.coarse,
+                                      Prolong ? &ty.fine : &ty.coarse,
+                                      Prolong ? &tz.fine : &tz.coarse};
+  const int lo[3] = {targetAxis[0]->begin(), targetAxis[1]->begin(), targetAxis[2]->begin()};
+  const int hi[3] = {targetAxis[0]->end(), targetAxis[1]->end(), targetAxis[2]->end()};
+  if (!(hi[0] > lo[0] && hi[1] > lo[1] && hi[2] > lo[2])) {
+    return;
+  }
+  const TransferBody<Prolong, MemorySpace> body{tx,
+                                                ty,
+                                                tz,
+                                                Prolong ? t.coarseOffsets : t.fineOffsets,
+                                                Prolong ? t.fineOffsets : t.coarseOffsets,
+                                                source,
+                                                target};
+  if constexpr (walksRows<ExecutionSpace>) {
+    Kokkos::parallel_for(label, rowPolicy(space, lo, hi),
+                         TransferRows<TransferBody<Prolong, MemorySpace>>{body, Rows(lo, hi)});
+  } else {
+    Kokkos::parallel_for(label, gridPolicy(space, lo, hi),
+                         TransferCells<TransferBody<Prolong, MemorySpace>>{body});
+  }
+}
+
+} // namespace detail
+
 /// \brief fine += P coarse on every fine unknown of the field described by `transfer`.
 template <class ExecutionSpace, class MemorySpace>
 void prolongateAdd(ExecutionSpace const& space, Transfer const& transfer,
                    Field<MemorySpace> const& coarse, Field<MemorySpace> const& fine) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::prolongateAdd: fields not accessible from the execution space");
-  const TransferAxis tx = transfer.axis[0], ty = transfer.axis[1], tz = transfer.axis[2];
-  const GhostOffsets fo = transfer.fineOffsets, co = transfer.coarseOffsets;
-  Kokkos::parallel_for(
-      "hikiln::cfd::prolongateAdd",
-      gridPolicy(space, {tx.fine.begin(), ty.fine.begin(), tz.fine.begin()},
-                 {tx.fine.end(), ty.fine.end(), tz.fine.end()}),
-      KOKKOS_LAMBDA(const int i, const int j, const int k) {
-        int ix[2], iy[2], iz[2];
-        double wx[2], wy[2], wz[2];
-        const int nx = prolongationWeights(tx, i, ix, wx);
-        const int ny = prolongationWeights(ty, j, iy, wy);
-        const int nz = prolongationWeights(tz, k, iz, wz);
-        double sum = 0.0;
-        for (int c = 0; c < nz; ++c) {
-          for (int b = 0; b < ny; ++b) {
-            const double wyz = wy[b] * wz[c];
-            for (int a = 0; a < nx; ++a) {
-              sum += wx[a] * wyz * coarse(ix[a] + co.x, iy[b] + co.y, iz[c] + co.z);
-            }
-          }
-        }
-        fine(i + fo.x, j + fo.y, k + fo.z) += sum;
-      });
+  detail::transfer<true>(space, "hikiln::cfd::prolongateAdd", transfer, coarse, fine);
 }
 
 /// \brief coarse = R fine on every coarse unknown of the field described by `transfer`.
@@ -155,29 +241,7 @@ void restrictField(ExecutionSpace const& space, Transfer const& transfer,
                    Field<MemorySpace> const& fine, Field<MemorySpace> const& coarse) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::restrictField: fields not accessible from the execution space");
-  const TransferAxis tx = transfer.axis[0], ty = transfer.axis[1], tz = transfer.axis[2];
-  const GhostOffsets fo = transfer.fineOffsets, co = transfer.coarseOffsets;
-  Kokkos::parallel_for(
-      "hikiln::cfd::restrictField",
-      gridPolicy(space, {tx.coarse.begin(), ty.coarse.begin(), tz.coarse.begin()},
-                 {tx.coarse.end(), ty.coarse.end(), tz.coarse.end()}),
-      KOKKOS_LAMBDA(const int i, const int j, const int k) {
-        int ix[4], iy[4], iz[4];
-        double wx[4], wy[4], wz[4];
-        const int nx = restrictionWeights(tx, i, ix, wx);
-        const int ny = restrictionWeights(ty, j, iy, wy);
-        const int nz = restrictionWeights(tz, k, iz, wz);
-        double sum = 0.0;
-        for (int c = 0; c < nz; ++c) {
-          for (int b = 0; b < ny; ++b) {
-            const double wyz = wy[b] * wz[c];
-            for (int a = 0; a < nx; ++a) {
-              sum += wx[a] * wyz * fine(ix[a] + fo.x, iy[b] + fo.y, iz[c] + fo.z);
-            }
-          }
-        }
-        coarse(i + co.x, j + co.y, k + co.z) = sum;
-      });
+  detail::transfer<false>(space, "hikiln::cfd::restrictField", transfer, fine, coarse);
 }
 
 /// \brief How averageDown treats node-centred axes.
