@@ -6,6 +6,7 @@
 
 #include "kernels/cfd/AxisClosure.hpp"
 #include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/SplitLoop.hpp"
 
 #include <Kokkos_Core.hpp>
 
@@ -99,8 +100,8 @@ void axpbyUnknowns(ExecutionSpace const& space, UnknownBox const& box, double al
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::axpbyUnknowns: fields not accessible from the execution space");
   const GhostOffsets o = box.offsets;
-  Kokkos::parallel_for(
-      "hikiln::cfd::axpbyUnknowns", gridPolicy(space, box.lo, box.hi),
+  forEachBoxCell(
+      space, "hikiln::cfd::axpbyUnknowns", box.lo, box.hi,
       KOKKOS_LAMBDA(const int i, const int j, const int k) {
         double& target = y(i + o.x, j + o.y, k + o.z);
         const double old = beta == 0.0 ? 0.0 : beta * target;
@@ -115,8 +116,8 @@ void fillUnknowns(ExecutionSpace const& space, UnknownBox const& box, double val
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::fillUnknowns: field not accessible from the execution space");
   const GhostOffsets o = box.offsets;
-  Kokkos::parallel_for(
-      "hikiln::cfd::fillUnknowns", gridPolicy(space, box.lo, box.hi),
+  forEachBoxCell(
+      space, "hikiln::cfd::fillUnknowns", box.lo, box.hi,
       KOKKOS_LAMBDA(const int i, const int j, const int k) {
         y(i + o.x, j + o.y, k + o.z) = value;
       });
@@ -129,8 +130,8 @@ void addToUnknowns(ExecutionSpace const& space, UnknownBox const& box, double va
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::addToUnknowns: field not accessible from the execution space");
   const GhostOffsets o = box.offsets;
-  Kokkos::parallel_for(
-      "hikiln::cfd::addToUnknowns", gridPolicy(space, box.lo, box.hi),
+  forEachBoxCell(
+      space, "hikiln::cfd::addToUnknowns", box.lo, box.hi,
       KOKKOS_LAMBDA(const int i, const int j, const int k) {
         y(i + o.x, j + o.y, k + o.z) += value;
       });

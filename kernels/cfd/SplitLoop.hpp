@@ -150,6 +150,37 @@ Kokkos::RangePolicy<ExecutionSpace> rowPolicy(ExecutionSpace const& space, int c
 
 } // namespace detail
 
+namespace detail {
+
+template <class F> struct BoxRows {
+  F f;
+  Rows rows;
+  KOKKOS_INLINE_FUNCTION void operator()(const int row) const {
+    const int j = rows.j(row), k = rows.k(row);
+    for (int i = rows.i0; i < rows.i1; ++i) {
+      f(i, j, k);
+    }
+  }
+};
+
+} // namespace detail
+
+/// \brief f(i, j, k) on every cell of the box [lo, hi), for element-wise kernels (f must not
+/// depend on the visiting order): on host spaces one launch index per row, as the stencils.
+template <class ExecutionSpace, class F>
+void forEachBoxCell(ExecutionSpace const& space, std::string const& label, int const (&lo)[3],
+                    int const (&hi)[3], F const& f) {
+  if (!(hi[0] > lo[0] && hi[1] > lo[1] && hi[2] > lo[2])) {
+    return;
+  }
+  if constexpr (detail::walksRows<ExecutionSpace>) {
+    Kokkos::parallel_for(label, detail::rowPolicy(space, lo, hi),
+                         detail::BoxRows<F>{f, detail::Rows(lo, hi)});
+  } else {
+    Kokkos::parallel_for(label, gridPolicy(space, lo, hi), f);
+  }
+}
+
 /// \brief body.cell<Interior>(i, j, k) on every cell of split (labels "<label>::interior/shell").
 template <class ExecutionSpace, class Body>
 void forEachSplitCell(ExecutionSpace const& space, std::string const& label, BoxSplit const& split,
