@@ -123,6 +123,20 @@ void fillUnknowns(ExecutionSpace const& space, UnknownBox const& box, double val
       });
 }
 
+/// \brief y = 1 where x > 0, else 0, on the box.
+template <class ExecutionSpace, class MemorySpace>
+void indicatorUnknowns(ExecutionSpace const& space, UnknownBox const& box,
+                       Field<MemorySpace> const& x, Field<MemorySpace> const& y) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::cfd::indicatorUnknowns: fields not accessible from the execution space");
+  const GhostOffsets o = box.offsets;
+  forEachBoxCell(
+      space, "hikiln::cfd::indicatorUnknowns", box.lo, box.hi,
+      KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        y(i + o.x, j + o.y, k + o.z) = x(i + o.x, j + o.y, k + o.z) > 0.0 ? 1.0 : 0.0;
+      });
+}
+
 /// \brief y += value on the box.
 template <class ExecutionSpace, class MemorySpace>
 void addToUnknowns(ExecutionSpace const& space, UnknownBox const& box, double value,

@@ -8,6 +8,11 @@
 /// - Levels from coarsenGrids (factor 2 per axis where possible, semi-coarsening for flat
 ///   domains); coefficients coarsened by averages: alpha over the 2^d children, beta over the
 ///   fine faces that make up a coarse face (the coarse operator is rediscretised, not Galerkin).
+///   With an `open` mask (cut cells: the capacity) alpha is averaged over the open children
+///   only, so the alpha that just decouples the cells outside a shell does not reach the coarse
+///   cells that straddle it (setupLevels). Where that leaves the open cells singular (no alpha
+///   on them, no side with a given value), their mean is kept out of the right-hand side and of
+///   every residual (setupOpenNullVector).
 /// - V(pre, post)-cycle: red-black Gauss-Seidel (red then black before, black then red after),
 ///   residual, restriction by the mean of the children, piecewise-constant interpolation of the
 ///   correction (options: linear, P^T restriction; see Transfer.hpp for the measured reasons),
@@ -53,12 +58,15 @@ public:
   /// for alpha = 0) and face coefficients beta (FaceX, FaceY, FaceZ; beta[2] unused in 2D) on
   /// grid with boundary conditions bc. The fields are referenced, not copied: change them and
   /// build a new solver. Throws if the coarsest level is too large for the direct solve.
+  /// With `open` (> 0 in the cells that belong to the problem, e.g. a cut-cell capacity), alpha
+  /// is coarsened over the open children only: see setupLevels.
   CellMultigrid(ExecutionSpace const& space, Grid const& grid, ScalarBoundaries const& bc,
                 field_type const& alpha, field_type const (&beta)[3],
-                MultigridOptions const& options = MultigridOptions())
+                MultigridOptions const& options = MultigridOptions(),
+                field_type const& open = field_type())
       : _space(space), _bc(bc), _options(options) {
     checkBoundaries(grid, bc);
-    setupLevels(grid, alpha, beta);
+    setupLevels(grid, alpha, beta, open);
     setupCoarseSolve();
   }
 
@@ -98,6 +106,7 @@ public:
     stats.initialResidual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, _r, true));
     stats.history.push_back(stats.initialResidual);
     double residual = stats.initialResidual;
+    removeOpenMean(_r);
     if (residual > 0.0) {
       precondition(_r, _z);
       axpbyUnknowns(_space, box, 1.0, _z, 0.0, _p);
@@ -108,6 +117,7 @@ public:
         const double step = rz / dotUnknowns(_space, box, _p, _q);
         axpbyUnknowns(_space, box, step, _p, 1.0, x);
         axpbyUnknowns(_space, box, -step, _q, 1.0, _r);
+        removeOpenMean(_r);
         residual = std::sqrt(dotUnknowns(_space, box, _r, _r));
         stats.history.push_back(residual);
         ++stats.iterations;
@@ -140,6 +150,7 @@ public:
     if (_singular) {
       removeMean(_space, _levels.front().box, z);
     }
+    removeOpenMean(z);
   }
 
   /// \brief ||f - A x|| over the cells (affine), using an internal buffer.
@@ -167,7 +178,12 @@ private:
     Transfer fromFiner; ///< transfer between the next finer level and this one
   };
 
-  void setupLevels(Grid const& grid, field_type const& alpha, field_type const (&beta)[3]) {
+  /// Coefficients of the coarse levels (see the file comment). With `open`, a coarse cell takes
+  /// the mean of alpha over its open children and is open when one of them is: the alpha that
+  /// only decouples the cells outside a shell (they have no open face) then stays out of the
+  /// coarse cells that straddle the shell, where it would be a sink the fine problem lacks.
+  void setupLevels(Grid const& grid, field_type const& alpha, field_type const (&beta)[3],
+                   field_type const& open) {
     const bool periodic[3] = {_bc.periodic(0), _bc.periodic(1), _bc.periodic(2)};
     const std::vector<LevelGeometry> geometry = coarsenGrids(grid, periodic, _options.coarsening);
     const bool hasAlpha = alpha.extent(0) > 0;
@@ -176,6 +192,7 @@ private:
       _singular = _singular && _bc.kind[side] != BoundaryKind::Value;
     }
     const int numAxes = grid.is3D() ? 3 : 2;
+    field_type finerOpen = hasAlpha ? open : field_type();
     for (std::size_t l = 0; l < geometry.size(); ++l) {
       Level level;
       Grid const& g = geometry[l].grid;
@@ -197,7 +214,13 @@ private:
       level.fromFiner = makeTransfer(finer.op, level.op, geometry[l].ratio, _options);
       if (hasAlpha) {
         level.op.alpha = makeField(_space, g, Staggering::Cell, "hikiln::cfd::mg::alpha");
-        averageDown(_space, level.fromFiner, NodeAverage::Inject, finer.op.alpha, level.op.alpha);
+        const field_type coarseOpen =
+            finerOpen.extent(0) > 0
+                ? makeField(_space, g, Staggering::Cell, "hikiln::cfd::mg::open")
+                : field_type();
+        averageDown(_space, level.fromFiner, NodeAverage::Inject, finer.op.alpha, level.op.alpha,
+                    finerOpen, coarseOpen);
+        finerOpen = coarseOpen;
       }
       for (int a = 0; a < numAxes; ++a) {
         level.op.beta[a] = makeField(_space, g, faceStaggering(a), "hikiln::cfd::mg::beta");
@@ -207,6 +230,43 @@ private:
         averageDown(_space, faces, NodeAverage::Inject, finer.op.beta[a], level.op.beta[a]);
       }
       _levels.push_back(level);
+    }
+    setupOpenNullVector(open);
+  }
+
+  /// With `open`, no alpha on the open cells and no side with a given value, the operator is
+  /// singular on the open cells (p up to a constant there; the others are decoupled by their
+  /// alpha): its null vector is their indicator. The coarse levels, which keep alpha off them,
+  /// are singular the same way, so the V-cycle cannot correct that mode, and round-off in the
+  /// Krylov recursion would feed it until the iteration diverges (a 256 x 256 drum at t = 3 s,
+  /// perf/README.md). The right-hand side and every residual and preconditioned residual are
+  /// therefore kept orthogonal to it (removeOpenMean).
+  void setupOpenNullVector(field_type const& open) {
+    Level const& fine = _levels.front();
+    if (open.extent(0) == 0 || fine.op.alpha.extent(0) == 0 || _singular) {
+      return;
+    }
+    for (int side = 0; side < 6; ++side) {
+      if (_bc.kind[side] == BoundaryKind::Value) {
+        return;
+      }
+    }
+    const field_type indicator =
+        makeField(_space, fine.op.grid, Staggering::Cell, "hikiln::cfd::mg::openCells");
+    indicatorUnknowns(_space, fine.box, open, indicator);
+    const double count = sumUnknowns(_space, fine.box, indicator);
+    if (count > 0.0 && dotUnknowns(_space, fine.box, fine.op.alpha, indicator) == 0.0) {
+      _openCells = indicator;
+      _openCount = count;
+    }
+  }
+
+  /// v -= (the mean of v over the open cells) on the open cells (see setupOpenNullVector).
+  void removeOpenMean(field_type const& v) {
+    if (_openCount > 0.0) {
+      const UnknownBox& box = _levels.front().box;
+      const double mean = dotUnknowns(_space, box, v, _openCells) / _openCount;
+      axpbyUnknowns(_space, box, -mean, _openCells, 1.0, v);
     }
   }
 
@@ -284,7 +344,7 @@ private:
   }
 
   field_type consistentRhs(field_type const& f) {
-    if (!_singular) {
+    if (!_singular && _openCount == 0.0) {
       return f;
     }
     Level& fine = _levels.front();
@@ -292,7 +352,10 @@ private:
       _rhs0 = makeField(_space, fine.op.grid, Staggering::Cell, "hikiln::cfd::mg::rhs0");
     }
     Kokkos::deep_copy(_space, _rhs0, f);
-    removeMean(_space, fine.box, _rhs0);
+    if (_singular) {
+      removeMean(_space, fine.box, _rhs0);
+    }
+    removeOpenMean(_rhs0);
     return _rhs0;
   }
 
@@ -313,6 +376,8 @@ private:
   std::vector<Level> _levels;
   DenseCoarseSolver<ExecutionSpace> _coarse;
   bool _singular = false;
+  field_type _openCells;   ///< indicator of the open cells when singular on them, else empty
+  double _openCount = 0.0; ///< their number (0: not singular on the open cells)
   field_type _rhs0, _r, _z, _p, _q;
 };
 

@@ -793,23 +793,26 @@ private:
     }
     imposeInflow(u.comp[2], withInflow ? 1.0 : 0.0);
     const auto start = startSolveClock();
-    // solid cells: any positive alpha decouples them. The multigrid averages alpha into the
-    // coarse cells that straddle the shell, where it acts as a sink the fine problem does not
-    // have. With an outflow side (p given there) keep it negligible against the fluid cells'
-    // diagonal 1 / (rho h^2): at 1 / (rho_solid h^2) a kiln's pressure iterations grew from 15 to
-    // 41 with the grid, at 1e-6 of that they stay at 8-9. A closed shell's fluid cells alone are
-    // singular (p up to a constant), and there that sink is what keeps the coarse levels
-    // regular: at 1e-6 the preconditioner's near-null mode stalls the iteration.
+    // cells outside the shell (no open face): any positive alpha decouples them. The
+    // multigrid coarsens alpha over the fluid cells only (the capacity as its mask), so that
+    // alpha stays out of the coarse cells that straddle the shell; averaged into them it was a
+    // sink the fine problem does not have, and the drums' pressure iterations grew with the grid
+    // (14 / 21 / 29 at 64 / 128 / 256 cells across, now 10-12). A closed shell's fluid cells are
+    // then singular on every level (p up to a constant): the coarsest level's pseudo-inverse
+    // drops that mode, and the multigrid keeps the right-hand side and the residuals free of it
+    // (CellMultigrid::setupOpenNullVector; without that, round-off fed the mode until a
+    // 256 x 256 drum's solve diverged at t = 3 s). The constant, which no term reads, is whatever
+    // the iteration leaves (bedPressure is gauge-free).
     const double hMin = std::min(_grid.hx, _grid.hy);
-    const double removedScale = _open.has(BoundaryKind::Outflow) ? 1e-6 : 1.0;
-    const double removedAlpha = removedScale / (_params.solidDensity * hMin * hMin);
+    const double removedAlpha = 1.0 / (_params.solidDensity * hMin * hMin);
     pressureCoefficients(_space, _cut, _rhoFace, removedAlpha, _pAlpha, _beta);
     apertureDivergence(_space, _cut, u, _div);
     axpbyUnknowns(_space, _cells, -1.0 / dt, _div, 0.0, _div);
     MultigridOptions popt;
     popt.tolerance = _params.pressureTolerance;
     popt.maxIterations = _params.maxIterations;
-    CellMultigrid<ExecutionSpace> mg(_space, _grid, _pressureBc, _pAlpha, _beta, popt);
+    CellMultigrid<ExecutionSpace> mg(_space, _grid, _pressureBc, _pAlpha, _beta, popt,
+                                     _cut.capacity);
     // a cold start: the stopping rule is relative to the initial residual, which a warm start
     // from p^n makes so small that round-off stalls the iteration
     Kokkos::deep_copy(_space, p, 0.0);
