@@ -148,10 +148,6 @@ Kokkos::RangePolicy<ExecutionSpace> rowPolicy(ExecutionSpace const& space, int c
   return Kokkos::RangePolicy<ExecutionSpace>(space, 0, (hi[1] - lo[1]) * (hi[2] - lo[2]));
 }
 
-} // namespace detail
-
-namespace detail {
-
 template <class F> struct BoxRows {
   F f;
   Rows rows;

@@ -106,7 +106,7 @@ public:
     stats.initialResidual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, _r, true));
     stats.history.push_back(stats.initialResidual);
     double residual = stats.initialResidual;
-    removeOpenMean(_r);
+    removeNullComponent(_r);
     if (residual > 0.0) {
       precondition(_r, _z);
       axpbyUnknowns(_space, box, 1.0, _z, 0.0, _p);
@@ -117,7 +117,7 @@ public:
         const double step = rz / dotUnknowns(_space, box, _p, _q);
         axpbyUnknowns(_space, box, step, _p, 1.0, x);
         axpbyUnknowns(_space, box, -step, _q, 1.0, _r);
-        removeOpenMean(_r);
+        removeNullComponent(_r);
         residual = std::sqrt(dotUnknowns(_space, box, _r, _r));
         stats.history.push_back(residual);
         ++stats.iterations;
@@ -147,10 +147,7 @@ public:
   void precondition(field_type const& r, field_type const& z) {
     Kokkos::deep_copy(_space, z, 0.0);
     cycle(0, z, r, false);
-    if (_singular) {
-      removeMean(_space, _levels.front().box, z);
-    }
-    removeOpenMean(z);
+    removeNullComponent(z);
   }
 
   /// \brief ||f - A x|| over the cells (affine), using an internal buffer.
@@ -240,7 +237,8 @@ private:
   /// are singular the same way, so the V-cycle cannot correct that mode, and round-off in the
   /// Krylov recursion would feed it until the iteration diverges (a 256 x 256 drum at t = 3 s,
   /// perf/README.md). The right-hand side and every residual and preconditioned residual are
-  /// therefore kept orthogonal to it (removeOpenMean).
+  /// therefore kept orthogonal to it (removeNullComponent, as the constant of a singular
+  /// operator).
   void setupOpenNullVector(field_type const& open) {
     Level const& fine = _levels.front();
     if (open.extent(0) == 0 || fine.op.alpha.extent(0) == 0 || _singular) {
@@ -261,10 +259,17 @@ private:
     }
   }
 
-  /// v -= (the mean of v over the open cells) on the open cells (see setupOpenNullVector).
-  void removeOpenMean(field_type const& v) {
-    if (_openCount > 0.0) {
-      const UnknownBox& box = _levels.front().box;
+  /// True when the operator has a null vector: the constant (_singular) or the open cells'
+  /// indicator (setupOpenNullVector).
+  bool hasNullSpace() const { return _singular || _openCount > 0.0; }
+
+  /// Removes from v its component along the null vector, if any: the mean over all cells, or
+  /// over the open cells on them.
+  void removeNullComponent(field_type const& v) {
+    const UnknownBox& box = _levels.front().box;
+    if (_singular) {
+      removeMean(_space, box, v);
+    } else if (_openCount > 0.0) {
       const double mean = dotUnknowns(_space, box, v, _openCells) / _openCount;
       axpbyUnknowns(_space, box, -mean, _openCells, 1.0, v);
     }
@@ -344,7 +349,7 @@ private:
   }
 
   field_type consistentRhs(field_type const& f) {
-    if (!_singular && _openCount == 0.0) {
+    if (!hasNullSpace()) {
       return f;
     }
     Level& fine = _levels.front();
@@ -352,10 +357,7 @@ private:
       _rhs0 = makeField(_space, fine.op.grid, Staggering::Cell, "hikiln::cfd::mg::rhs0");
     }
     Kokkos::deep_copy(_space, _rhs0, f);
-    if (_singular) {
-      removeMean(_space, fine.box, _rhs0);
-    }
-    removeOpenMean(_rhs0);
+    removeNullComponent(_rhs0);
     return _rhs0;
   }
 
