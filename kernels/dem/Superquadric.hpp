@@ -106,9 +106,13 @@ KOKKOS_INLINE_FUNCTION void boundaryNormal(const SuperquadricShape& s, double ph
 struct Support {
   double h = 0.0;          ///< support value (m)
   double x = 0.0, y = 0.0; ///< support point (m)
+  double radius = 0.0;     ///< radius of curvature there (m), where asked for (supportCurvature())
 };
 
 namespace detail {
+
+/// \brief The radius of curvature supportRadius() gives a flat face's centre (m).
+inline constexpr double flatRadius = 1e300;
 
 /// \brief The support of the N-norm ball in the direction (U, V) >= 0 (not both 0) in two roots:
 /// with big = max(U, V), t = min(U, V) / big in [0, 1], r = t^(1/(N-1)) and q = 1 + t r
@@ -116,7 +120,9 @@ namespace detail {
 /// (along the bigger component) and r / g (along the smaller one), both in [0, 1].
 struct UnitSupport {
   double h = 0.0;
-  double pU = 0.0, pV = 0.0; ///< support point / (a, b), without signs
+  double pU = 0.0, pV = 0.0;                    ///< support point / (a, b), without signs
+  double t = 0.0, r = 0.0, q = 1.0, invG = 1.0; ///< the roots' arguments and results
+  bool uBig = true;
 };
 
 KOKKOS_INLINE_FUNCTION UnitSupport unitSupport(double n, double U, double V) {
@@ -133,7 +139,32 @@ KOKKOS_INLINE_FUNCTION UnitSupport unitSupport(double n, double U, double V) {
   out.h = big * q * invG;
   out.pU = uBig ? invG : r * invG;
   out.pV = uBig ? r * invG : invG;
+  out.t = t;
+  out.r = r;
+  out.q = q;
+  out.invG = invG;
+  out.uBig = uBig;
   return out;
+}
+
+/// \brief Radius of curvature of the outline (semi-axes a, b) at the support point of `unit`,
+/// from its roots: with X, Y the support point over (a, b), the curvature of |x/a|^N + |y/b|^N = 1
+/// is (N - 1) (X Y)^(N-2) / (a^2 b^2 (X^(2N-2) / a^2 + Y^(2N-2) / b^2)^(3/2)), which in the
+/// roots is rho = A^2 B^2 (r / t) w^(3/2) / ((N - 1) g q), w = 1 / A^2 + t^2 / B^2, A the
+/// semi-axis of the bigger component. Infinite at a face centre (t = 0) for N > 2 (returned as
+/// flatRadius), the circle's radius for N = 2, a = b (tstSuperquadricGeometry.hpp checks it
+/// against h + h'').
+KOKKOS_INLINE_FUNCTION double supportRadius(double n, double a, double b, const UnitSupport& unit) {
+  const double A = unit.uBig ? a : b, B = unit.uBig ? b : a;
+  double rOverT = 1.0; // t^(1/(N-1) - 1)
+  if (n != 2.0) {
+    if (!(unit.t > 0.0)) {
+      return flatRadius;
+    }
+    rOverT = unit.r / unit.t;
+  }
+  const double w = 1.0 / (A * A) + unit.t * unit.t / (B * B);
+  return A * A * B * B * rOverT * w * math::sqrt(w) * unit.invG / ((n - 1.0) * unit.q);
 }
 
 } // namespace detail
@@ -147,7 +178,9 @@ KOKKOS_INLINE_FUNCTION double supportValue(const SuperquadricShape& s, double u,
 
 /// \brief Support value and point: p = (a sgn(u) (U/h)^(1/(N-1)), b sgn(v) (V/h)^(1/(N-1))), which
 /// lies on the outline and has the outward normal (u, v); from the same two roots as
-/// supportValue().
+/// supportValue(). WithRadius: also the radius of curvature there (detail::supportRadius()), h +
+/// h'' of the support function over the direction's angle.
+template <bool WithRadius = false>
 KOKKOS_INLINE_FUNCTION Support supportPoint(const SuperquadricShape& s, double u, double v) {
   const detail::UnitSupport unit =
       detail::unitSupport(s.n, s.a * math::fabs(u), s.b * math::fabs(v));
@@ -155,6 +188,9 @@ KOKKOS_INLINE_FUNCTION Support supportPoint(const SuperquadricShape& s, double u
   out.h = unit.h;
   out.x = s.a * unit.pU * (u < 0.0 ? -1.0 : 1.0);
   out.y = s.b * unit.pV * (v < 0.0 ? -1.0 : 1.0);
+  if constexpr (WithRadius) {
+    out.radius = detail::supportRadius(s.n, s.a, s.b, unit);
+  }
   return out;
 }
 

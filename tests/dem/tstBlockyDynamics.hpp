@@ -209,11 +209,11 @@ struct Heap {
   double restShare = 0.0; ///< share of particles slower than 1 cm/s
 };
 
-// A column of 6 x 10 polydisperse particles against the wall x = 0 on the floor y = 0, released
-// to the right, runs for 0.8 s. The slope of the half heap is atan(y_c / x_c) of the particles'
-// centroid (for a right triangle of height H and runout L, y_c / x_c = H / L), without the
-// particles that left the heap.
-Heap collapsedColumn(double blockiness) {
+// A column of 6 x 10 polydisperse particles (sizes and row offsets drawn from `seed`) against the
+// wall x = 0 on the floor y = 0, released to the right, runs for 1.5 s. The slope of the half heap
+// is atan(y_c / x_c) of the particles' centroid (for a right triangle of height H and runout L, y_c
+// / x_c = H / L), without the particles that left the heap.
+Heap collapsedColumn(double blockiness, unsigned seed) {
   DemConfig cfg;
   cfg.particleContact.normalStiffness = 1.0e4;
   cfg.particleContact.tangentialStiffness = 5.0e3;
@@ -227,7 +227,7 @@ Heap collapsedColumn(double blockiness) {
   const double r = 0.01, pitch = 2.1 * 1.15 * r;
   const int columns = 6, rows = 10;
   auto h = test::hostParticles(columns * rows);
-  std::mt19937_64 gen(4);
+  std::mt19937_64 gen(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int k = 0; k < columns * rows; ++k) {
     const int row = k / columns;
@@ -238,7 +238,7 @@ Heap collapsedColumn(double blockiness) {
   const auto shapes = test::blockify(h, blockiness, 1.0, 6, 2500.0, 2.0 * r);
   DemSystem<space> sys(cfg);
   sys.setParticles(h, shapes);
-  sys.advance(static_cast<std::int64_t>(0.8 / sys.timeStep()));
+  sys.advance(static_cast<std::int64_t>(1.5 / sys.timeStep()));
   const auto p = sys.hostParticles();
   double mx = 0.0, my = 0.0;
   std::size_t atRest = 0;
@@ -261,15 +261,25 @@ Heap collapsedColumn(double blockiness) {
 }
 
 // Discs (no rolling resistance) keep rolling down the slope; blocks come to rest at a steeper one.
-// Measured: discs 8.4 deg with 7 % at rest, N = 4 blocks 14.3 deg with 85 % at rest (16.3 deg, 80 %
-// before the warm-started contact search: one chaotic collapse, sensitive to round-off).
+// Each collapse is chaotic: a change at round-off (the contact search's iterates) moved one
+// column's share of blocks at rest after 0.8 s between 30 % and 95 % over 12 seeds, so the test
+// averages three columns (seeds 1-3) and lets them settle for 1.5 s. Measured (2026-12-05, the
+// Newton search): discs 5.9 deg on average, N = 4 blocks 13.6 deg with 96 % at rest (seeds 1-12
+// at 1.5 s, with the search before it too: blocks 88-97 % at rest, 10.7-16.9 deg).
 TEST(TEST_CATEGORY, blocky_heap_steeper_than_discs) {
-  const Heap discs = collapsedColumn(2.0);
-  const Heap blocks = collapsedColumn(4.0);
-  std::printf("collapsed column: discs %.1f deg (%.0f %% at rest), blocks (N = 4) %.1f deg "
-              "(%.0f %% at rest)\n",
-              discs.angle, 100.0 * discs.restShare, blocks.angle, 100.0 * blocks.restShare);
-  EXPECT_GT(blocks.restShare, 0.75);
+  Heap discs, blocks;
+  const unsigned seeds[] = {1, 2, 3};
+  for (const unsigned seed : seeds) {
+    const Heap d = collapsedColumn(2.0, seed), b = collapsedColumn(4.0, seed);
+    std::printf("collapsed column %u: discs %.1f deg (%.0f %% at rest), blocks (N = 4) %.1f deg "
+                "(%.0f %% at rest)\n",
+                seed, d.angle, 100.0 * d.restShare, b.angle, 100.0 * b.restShare);
+    discs.angle += d.angle / 3.0;
+    discs.restShare += d.restShare / 3.0;
+    blocks.angle += b.angle / 3.0;
+    blocks.restShare += b.restShare / 3.0;
+  }
+  EXPECT_GT(blocks.restShare, 0.8);
   EXPECT_GT(blocks.angle, discs.angle + 5.0);
 }
 

@@ -174,6 +174,44 @@ TEST(TEST_CATEGORY, superquadric_support_bound) {
   }
 }
 
+TEST(TEST_CATEGORY, superquadric_support_radius_is_h_plus_h2) {
+  // the radius of curvature at the support point (the warm search's pen'') against h + h'' of the
+  // support value over the direction's angle by central differences; the circle's radius exactly;
+  // a flat face's centre has none
+  std::mt19937_64 gen(29);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const auto h = [](const SuperquadricShape& s, double psi) {
+    return supportValue(s, std::cos(psi), std::sin(psi));
+  };
+  for (const double n : {2.0, 2.5, 3.0, 4.0, 6.0, 8.0}) {
+    for (const double aspect : {1.0, 2.5}) {
+      const SuperquadricShape s{0.7, 0.7 / aspect, n};
+      int checked = 0;
+      for (int k = 0; k < 500; ++k) {
+        const double psi = pi * u(gen), du = std::cos(psi), dv = std::sin(psi);
+        // away from the face centres, where the radius grows without bound for N > 2
+        const double U = s.a * std::fabs(du), V = s.b * std::fabs(dv);
+        if (std::min(U, V) < 0.1 * std::max(U, V)) {
+          continue;
+        }
+        const double step = 1e-4;
+        const double fd =
+            h(s, psi) + (h(s, psi + step) - 2.0 * h(s, psi) + h(s, psi - step)) / (step * step);
+        const Support p = supportPoint<true>(s, du, dv);
+        EXPECT_NEAR(p.radius, fd, 1e-5 * std::max(1.0, fd)) << "N " << n << " psi " << psi;
+        EXPECT_EQ(p.h, supportValue(s, du, dv));
+        ++checked;
+      }
+      EXPECT_GT(checked, 100);
+      EXPECT_EQ(supportPoint<true>(s, 1.0, 0.0).radius > 1e200, n != 2.0) << "N " << n;
+    }
+  }
+  const SuperquadricShape circle{0.3, 0.3, 2.0};
+  for (const double psi : {0.0, 0.3, 1.1, 2.0, -2.9}) {
+    EXPECT_NEAR(supportPoint<true>(circle, std::cos(psi), std::sin(psi)).radius, 0.3, 1e-15);
+  }
+}
+
 // Brute-force minimum of pen over `count` directions on the full circle.
 double bruteOverlap(const SuperquadricShape& A, double ta, const SuperquadricShape& B, double tb,
                     double dx, double dy, int count) {
@@ -316,7 +354,7 @@ TEST(TEST_CATEGORY, superquadric_warm_start_matches_cold_search) {
         EXPECT_NEAR(g.nx, cold.nx, 1e-9) << "turn " << turn;
         EXPECT_NEAR(g.ny, cold.ny, 1e-9) << "turn " << turn;
         // the contact point on a near-flat face moves as |dphi|^(1/(N-1)) (corner_to_face):
-        // measured up to 1e-5 of the size here
+        // measured up to 1e-5 of the size here with the Illinois search, 6e-8 with Newton's
         EXPECT_NEAR(g.px, cold.px, 1e-4);
         EXPECT_NEAR(g.py, cold.py, 1e-4);
         pointError = std::max(pointError, std::hypot(g.px - cold.px, g.py - cold.py));
