@@ -116,10 +116,26 @@ KOKKOS_INLINE_FUNCTION double worldSupportValueBound(const SuperquadricShape& s,
 
 namespace detail {
 
+/// \brief The support points of an objective's last evaluation with both, in the direction
+/// (nx, ny). A search ends on its result's direction, so the caller takes the contact from them
+/// instead of taking the roots again (the same numbers).
+struct LastSupports {
+  double nx = 2.0, ny = 0.0; ///< none yet (not a unit vector)
+  Support first, second;
+  KOKKOS_INLINE_FUNCTION void keep(double ux, double uy, const Support& p, const Support& q) {
+    nx = ux;
+    ny = uy;
+    first = p;
+    second = q;
+  }
+  KOKKOS_INLINE_FUNCTION bool at(double ux, double uy) const { return ux == nx && uy == ny; }
+};
+
 /// \brief pen(phi) of a pair and its derivative (see the file comment).
 struct PairObjective {
   SuperquadricShape A, B;
   double ca, sa, cb, sb, dx, dy;
+  mutable LastSupports last;
   KOKKOS_INLINE_FUNCTION double value(double nx, double ny) const {
     return worldSupportValue(A, ca, sa, nx, ny) + worldSupportValue(B, cb, sb, -nx, -ny) -
            (dx * nx + dy * ny);
@@ -133,6 +149,7 @@ struct PairObjective {
   KOKKOS_INLINE_FUNCTION double slope(double nx, double ny) const {
     const Support a = worldSupport(A, ca, sa, nx, ny);
     const Support b = worldSupport(B, cb, sb, -nx, -ny);
+    last.keep(nx, ny, a, b);
     return (a.x - b.x - dx) * (-ny) + (a.y - b.y - dy) * nx;
   }
   /// \brief value(), slope() and the second derivative pen'' = rho_A + rho_B - pen from one
@@ -142,6 +159,7 @@ struct PairObjective {
                                          double& curvatureOut) const {
     const Support a = worldSupport<true>(A, ca, sa, nx, ny);
     const Support b = worldSupport<true>(B, cb, sb, -nx, -ny);
+    last.keep(nx, ny, a, b);
     slopeOut = (a.x - b.x - dx) * (-ny) + (a.y - b.y - dy) * nx;
     const double value = a.h + b.h - (dx * nx + dy * ny);
     curvatureOut = a.radius + b.radius - value;
@@ -153,6 +171,7 @@ struct PairObjective {
 struct DrumObjective {
   SuperquadricShape S;
   double c, sn, x, y;
+  mutable LastSupports last; ///< first: the particle's support point
   KOKKOS_INLINE_FUNCTION double value(double nx, double ny) const {
     return -(x * nx + y * ny + worldSupportValue(S, c, sn, nx, ny));
   }
@@ -160,6 +179,7 @@ struct DrumObjective {
   KOKKOS_INLINE_FUNCTION double valueBound(double nx, double ny) const { return value(nx, ny); }
   KOKKOS_INLINE_FUNCTION double slope(double nx, double ny) const {
     const Support s = worldSupport(S, c, sn, nx, ny);
+    last.keep(nx, ny, s, s);
     return -((x + s.x) * (-ny) + (y + s.y) * nx);
   }
 };
@@ -408,7 +428,7 @@ KOKKOS_INLINE_FUNCTION bool superquadricPair(const SuperquadricShape& A, BodyAxi
                                              const SuperquadricShape& B, BodyAxis axisB, double dx,
                                              double dy, ContactGeometry& g,
                                              PairGuess kind = PairGuess::None, double guess = 0.0) {
-  detail::PairObjective f{A, B, axisA.c, axisA.s, axisB.c, axisB.s, dx, dy};
+  detail::PairObjective f{A, B, axisA.c, axisA.s, axisB.c, axisB.s, dx, dy, {}};
   if (boundingRectanglesApart(A, f.ca, f.sa, B, f.cb, f.sb, dx, dy)) {
     return false;
   }
@@ -439,8 +459,9 @@ KOKKOS_INLINE_FUNCTION bool superquadricPair(const SuperquadricShape& A, BodyAxi
   g.angle = phi; // the normal, or a separating axis when pen(phi) <= 0
   g.axis = true;
   const double nx = math::cos(phi), ny = math::sin(phi);
-  const Support a = worldSupport(A, f.ca, f.sa, nx, ny);
-  const Support b = worldSupport(B, f.cb, f.sb, -nx, -ny);
+  const bool known = f.last.at(nx, ny);
+  const Support a = known ? f.last.first : worldSupport(A, f.ca, f.sa, nx, ny);
+  const Support b = known ? f.last.second : worldSupport(B, f.cb, f.sb, -nx, -ny);
   const double overlap = (a.x - b.x - dx) * nx + (a.y - b.y - dy) * ny;
   if (!(overlap > 0.0)) {
     return false;
@@ -467,7 +488,7 @@ KOKKOS_INLINE_FUNCTION bool superquadricPair(const SuperquadricShape& A, double 
 KOKKOS_INLINE_FUNCTION bool superquadricDrum(const SuperquadricShape& s, BodyAxis axis,
                                              double radius, double x, double y,
                                              ContactGeometry& g) {
-  detail::DrumObjective f{s, axis.c, axis.s, x, y};
+  detail::DrumObjective f{s, axis.c, axis.s, x, y, {}};
   // the bounding rectangle inside the shell (its corners are): no contact
   const double ax = f.c * s.a, ay = f.sn * s.a, bx = -f.sn * s.b, by = f.c * s.b;
   const double r2 = radius * radius;
@@ -485,7 +506,7 @@ KOKKOS_INLINE_FUNCTION bool superquadricDrum(const SuperquadricShape& s, BodyAxi
   double phi = 0.0;
   detail::minimiseHalfCircle(f, phi0, halfWidth, false, s.a + s.b + radius, phi);
   const double nx = math::cos(phi), ny = math::sin(phi);
-  const Support p = worldSupport(s, f.c, f.sn, nx, ny);
+  const Support p = f.last.at(nx, ny) ? f.last.first : worldSupport(s, f.c, f.sn, nx, ny);
   const double overlap = x * nx + y * ny + p.h - radius;
   if (!(overlap > 0.0)) {
     return false;
