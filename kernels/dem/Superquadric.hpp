@@ -106,7 +106,7 @@ KOKKOS_INLINE_FUNCTION void boundaryNormal(const SuperquadricShape& s, double ph
 struct Support {
   double h = 0.0;          ///< support value (m)
   double x = 0.0, y = 0.0; ///< support point (m)
-  double radius = 0.0;     ///< radius of curvature there (m), where asked for (supportCurvature())
+  double radius = 0.0;     ///< radius of curvature there (m), where asked for (supportPoint())
 };
 
 namespace detail {

@@ -56,7 +56,7 @@ namespace hikiln::dem {
 
 /// \brief The scan samples phi0 + j pi / (2 M + 2) for |j| <= M = contactScanHalf (11.25 degrees).
 inline constexpr int contactScanHalf = 7;
-/// \brief Most refinement steps (safeguarded Illinois).
+/// \brief Most refinement steps (safeguarded Illinois or Newton).
 inline constexpr int contactRefineIterations = 64;
 /// \brief First step of a warm-started search away from the last normal where Newton gives none
 /// (rad); such steps double up to contactWarmReach.
