@@ -198,7 +198,8 @@ TEST(TEST_CATEGORY, superquadric_support_radius_is_h_plus_h2) {
         const double fd =
             h(s, psi) + (h(s, psi + step) - 2.0 * h(s, psi) + h(s, psi - step)) / (step * step);
         const Support p = supportPoint<true>(s, du, dv);
-        EXPECT_NEAR(p.radius, fd, 1e-5 * std::max(1.0, fd)) << "N " << n << " psi " << psi;
+        // the differences' own error is up to 8e-7 here (step 1e-4)
+        EXPECT_NEAR(p.radius, fd, 4e-6 * std::max(1.0, fd)) << "N " << n << " psi " << psi;
         EXPECT_EQ(p.h, supportValue(s, du, dv));
         ++checked;
       }
