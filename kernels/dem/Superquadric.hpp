@@ -67,6 +67,33 @@ KOKKOS_INLINE_FUNCTION double rootOfOrder(double x, double k) {
   return x > 0.0 ? math::pow(x, 1.0 / k) : 0.0;
 }
 
+/// \brief x^k for x >= 0, by products for the whole orders 1 to 7; pow otherwise.
+KOKKOS_INLINE_FUNCTION double powerOfOrder(double x, double k) {
+  if (k == 1.0) {
+    return x;
+  }
+  if (k == 2.0) {
+    return x * x;
+  }
+  if (k == 3.0) {
+    return x * x * x;
+  }
+  const double x2 = x * x;
+  if (k == 4.0) {
+    return x2 * x2;
+  }
+  if (k == 5.0) {
+    return x2 * x2 * x;
+  }
+  if (k == 6.0) {
+    return x2 * x2 * x2;
+  }
+  if (k == 7.0) {
+    return x2 * x2 * x2 * x;
+  }
+  return math::pow(x, k);
+}
+
 /// \brief Inside-outside function F = |x/a|^N + |y/b|^N - 1 at a body-frame point (< 0 inside).
 KOKKOS_INLINE_FUNCTION double insideOutside(const SuperquadricShape& s, double x, double y) {
   return math::pow(math::fabs(x / s.a), s.n) + math::pow(math::fabs(y / s.b), s.n) - 1.0;
@@ -107,6 +134,9 @@ struct Support {
   double h = 0.0;          ///< support value (m)
   double x = 0.0, y = 0.0; ///< support point (m)
   double radius = 0.0;     ///< radius of curvature there (m), where asked for (supportPoint())
+  /// where the radius is asked for: t = min / max of (a |u|, b |v|) and its root r = t^(1/(N-1))
+  /// (detail::UnitSupport), the variable in which the support is smooth next to a face centre
+  double t = 0.0, r = 0.0;
 };
 
 namespace detail {
@@ -190,6 +220,8 @@ KOKKOS_INLINE_FUNCTION Support supportPoint(const SuperquadricShape& s, double u
   out.y = s.b * unit.pV * (v < 0.0 ? -1.0 : 1.0);
   if constexpr (WithRadius) {
     out.radius = detail::supportRadius(s.n, s.a, s.b, unit);
+    out.t = unit.t;
+    out.r = unit.r;
   }
   return out;
 }

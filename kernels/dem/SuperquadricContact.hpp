@@ -34,11 +34,11 @@
 /// pen(guess) <= 0 is still a separating axis (no contact; the root-free bound first, then one
 /// support evaluation per shape); a last normal with pen > 0 starts a local search: safeguarded
 /// Newton steps on pen' = 0 with the exact pen'' = rho_A + rho_B - pen (rho the radii of
-/// curvature at the support points, from the same roots), bisection where they overshoot (near-flat
-/// faces), and the scan when no sign change lies within 0.5 rad (4.1 evaluations a search for
-/// N = 4 and 6.3 for N = 6 in a flowing drum, where the Illinois refinement alone took 5.2 and 8.2
-/// after the probes: docs/blocky-particles.md). A warm-started search follows its basin of pen
-/// continuously; the cold scan takes the deepest sampled one.
+/// curvature at the support points, from the same roots), taken in the support's root next to a
+/// face centre, where the slope behaves like |x|^(1/(N-1)) (faceNewtonTarget()), bisection where
+/// they overshoot, and the scan when no sign change lies within 0.5 rad (3.1 evaluations a search
+/// for N = 4 and 3.3 for N = 6 in a flowing drum: docs/blocky-particles.md). A warm-started
+/// search follows its basin of pen continuously; the cold scan takes the deepest sampled one.
 ///
 /// Drum: overlap = max over the outline of |p| - R = max_n (x_c . n + h(n)) - R, found the same way
 /// around x_c/|x_c|; the contact point is the particle's deepest point. Flat wall: the support
@@ -46,6 +46,8 @@
 ///
 /// Circles (N = 2, a = b) never come here in the force kernel: they use pairFrame()/drumFrame()
 /// exactly as the disc engine does (blockyPairContact()).
+
+#include <cfloat>
 
 #include "kernels/common/Compat.hpp"
 #include "kernels/dem/ContactLaw.hpp"
@@ -66,8 +68,12 @@ inline constexpr double contactWarmReach = 0.5;
 /// \brief Refinement stops when the support points are aligned along n to this fraction of the
 /// shapes' size...
 inline constexpr double contactSlopeTolerance = 1e-12;
-/// \brief ... or when the bracket of the normal angle is this narrow (rad).
+/// \brief ... or when the bracket of the normal angle is this narrow (rad), or a converging Newton
+/// step this short...
 inline constexpr double contactAngleTolerance = 1e-13;
+/// \brief ... or, next to a face centre, a converging Newton step in the support's root this short
+/// (the contact point moves with the root, not with the angle: faceNewtonTarget()).
+inline constexpr double contactRootTolerance = 1e-10;
 
 /// \brief Result of a narrow-phase test.
 struct ContactGeometry {
@@ -93,12 +99,10 @@ KOKKOS_INLINE_FUNCTION BodyAxis bodyAxis(double theta) {
 template <bool WithRadius = false>
 KOKKOS_INLINE_FUNCTION Support worldSupport(const SuperquadricShape& s, double c, double sn,
                                             double nx, double ny) {
-  const Support b = supportPoint<WithRadius>(s, c * nx + sn * ny, -sn * nx + c * ny);
-  Support w;
-  w.h = b.h;
-  w.x = c * b.x - sn * b.y;
-  w.y = sn * b.x + c * b.y;
-  w.radius = b.radius;
+  Support w = supportPoint<WithRadius>(s, c * nx + sn * ny, -sn * nx + c * ny);
+  const double bx = w.x;
+  w.x = c * bx - sn * w.y;
+  w.y = sn * bx + c * w.y;
   return w;
 }
 
@@ -130,6 +134,65 @@ struct LastSupports {
   }
   KOKKOS_INLINE_FUNCTION bool at(double ux, double uy) const { return ux == nx && uy == ny; }
 };
+
+/// \brief The Newton step -slope / curvature of a minimisation, or 0 where the curvature gives
+/// none (not positive, or a flat face's).
+KOKKOS_INLINE_FUNCTION double newtonStep(double slope, double curvature) {
+  return curvature > 0.0 && curvature < 1e-3 * flatRadius ? -slope / curvature : 0.0;
+}
+
+/// \brief Where a Newton step lands, and whether it was short enough to stop after it.
+struct NewtonTarget {
+  double phi = 0.0;
+  bool converged = false;
+};
+
+/// \brief The Newton step of a minimisation at the angle phi (direction (nx, ny), slope g,
+/// curvature c) where shape s (orientation (cs, ss)) has the support `p`. Next to a face centre
+/// the slope grows like |x|^(1/(N-1)) with the angle x from the face normal, so Newton steps in
+/// phi overshoot by up to N - 1 times (and the safeguard bisects, ~30 steps to the angle
+/// tolerance); the slope cannot reach its tolerance there in double precision either. The
+/// support is smooth in its root r = t^(1/(N-1)) (Superquadric.hpp), so the step is taken in
+/// y = sgn(x) r, with tan x = sgn(x) (A / B) t (A the semi-axis along the face normal): one step
+/// lands on the root of a slope linear in y, and the step in y, which moves the contact point,
+/// decides convergence (contactRootTolerance; or a step in phi at round-off). Plain Newton in
+/// phi (contactAngleTolerance) for an ellipse (no faces) and where the outline is not flat
+/// (radius below 4 of its semi-axes).
+KOKKOS_INLINE_FUNCTION NewtonTarget faceNewtonTarget(const SuperquadricShape& s, double cs,
+                                                     double ss, const Support& p, double nx,
+                                                     double ny, double phi, double g, double c) {
+  NewtonTarget plain;
+  const double step = newtonStep(g, c);
+  plain.phi = phi + step;
+  plain.converged = step != 0.0 && math::fabs(step) <= contactAngleTolerance;
+  if (s.n == 2.0 || !(p.radius > 4.0 * (s.a + s.b)) || !(p.radius < 1e-3 * flatRadius) ||
+      !(p.t > 0.0)) {
+    return plain;
+  }
+  const double u = cs * nx + ss * ny, v = -ss * nx + cs * ny; // the direction in the body frame
+  const bool uBig = math::fabs(s.a * u) >= math::fabs(s.b * v);
+  const double ratio = uBig ? s.a / s.b : s.b / s.a;         // A / B
+  const double sign = ((u * v >= 0.0) == uBig) ? 1.0 : -1.0; // of x
+  const double tanX = sign * ratio * p.t;
+  const double dPhiDy = ratio * (s.n - 1.0) * (p.t / p.r) / (1.0 + tanX * tanX);
+  const double slopeInY = c * dPhiDy;
+  if (!(slopeInY > 0.0)) {
+    return plain;
+  }
+  const double stepInY = -g / slopeInY;
+  const double y = sign * p.r + stepInY;
+  const double tanNew = (y < 0.0 ? -ratio : ratio) * powerOfOrder(math::fabs(y), s.n - 1.0);
+  const double cosine = 1.0 + tanNew * tanX; // of the step, times cos x cos x'
+  if (!(cosine > 0.0)) {
+    return plain;
+  }
+  NewtonTarget face;
+  const double stepInPhi = math::atan((tanNew - tanX) / cosine);
+  face.phi = phi + stepInPhi;
+  face.converged = math::fabs(stepInY) <= contactRootTolerance ||
+                   math::fabs(stepInPhi) <= 4.0 * DBL_EPSILON * (1.0 + math::fabs(phi));
+  return face;
+}
 
 /// \brief pen(phi) of a pair and its derivative (see the file comment).
 struct PairObjective {
@@ -164,6 +227,13 @@ struct PairObjective {
     const double value = a.h + b.h - (dx * nx + dy * ny);
     curvatureOut = a.radius + b.radius - value;
     return value;
+  }
+  /// \brief Where a Newton step from phi (slope g, curvature c of the last evaluate(), there)
+  /// lands: in the face variable of the flatter support (faceNewtonTarget()).
+  KOKKOS_INLINE_FUNCTION NewtonTarget newtonTarget(double phi, double g, double c) const {
+    return last.first.radius >= last.second.radius
+               ? faceNewtonTarget(A, ca, sa, last.first, last.nx, last.ny, phi, g, c)
+               : faceNewtonTarget(B, cb, sb, last.second, last.nx, last.ny, phi, g, c);
   }
 };
 
@@ -299,25 +369,26 @@ KOKKOS_INLINE_FUNCTION bool minimiseHalfCircle(const Objective& f, double phi0, 
 /// \brief Outcome of a warm-started pair search.
 enum class WarmStart { Separated, Found, Failed };
 
-/// \brief The Newton step -slope / curvature of a minimisation, or 0 where the curvature gives
-/// none (not positive, or a flat face's).
-KOKKOS_INLINE_FUNCTION double newtonStep(double slope, double curvature) {
-  return curvature > 0.0 && curvature < 1e-3 * flatRadius ? -slope / curvature : 0.0;
-}
-
 /// \brief Root of f's slope in the bracket [lo, hi] (slope glo < 0 < ghi), from the iterate phi
 /// (one of its ends, slope g and curvature c there): Newton steps while they land inside the
 /// bracket and at least halve the step before last, bisection otherwise (near-flat faces, where
-/// the slope behaves like |phi - phi*|^(1/(N-1)) and Newton overshoots); stops as
-/// refineBracket(). Returns the last iterate.
+/// the slope behaves like |phi - phi*|^(1/(N-1)) and Newton overshoots; f.newtonTarget() steps in
+/// the support's root there); stops as refineBracket() or after a converged Newton step
+/// (NewtonTarget). Returns the last iterate.
 template <class Objective>
 KOKKOS_INLINE_FUNCTION double refineNewton(const Objective& f, double lo, double hi, double phi,
                                            double g, double c, double tolerance) {
   double stepOld = hi - lo, step = stepOld;
   for (int it = 0; it < contactRefineIterations; ++it) {
-    const double newton = phi + newtonStep(g, c);
+    const NewtonTarget target = f.newtonTarget(phi, g, c);
+    if (target.converged) {
+      break; // the root is closer to phi than that short step
+    }
+    const double newton = target.phi;
     const double stepNewton = math::fabs(newton - phi);
-    if (newton > lo && newton < hi && stepNewton > 0.0 && stepNewton <= 0.5 * stepOld) {
+    const bool takeNewton =
+        newton > lo && newton < hi && stepNewton > 0.0 && stepNewton <= 0.5 * stepOld;
+    if (takeNewton) {
       stepOld = step;
       step = stepNewton;
       phi = newton;
@@ -364,7 +435,11 @@ KOKKOS_INLINE_FUNCTION WarmStart minimiseFromGuess(const Objective& f, double gu
   double near = guess, gNear = g, delta = 0.0;
   bool slow = false;
   for (int it = 0; it < contactRefineIterations; ++it) {
-    double step = math::fabs(newtonStep(gNear, c));
+    const NewtonTarget target = f.newtonTarget(near, gNear, c);
+    if (target.converged) {
+      return WarmStart::Found; // phiOut: near
+    }
+    double step = math::fabs(target.phi - near);
     if (!(step > 0.0)) {
       step = delta > 0.0 ? 2.0 * delta : contactWarmStep;
     } else if (slow && step < 2.0 * delta) {
