@@ -11,20 +11,20 @@
 /// circle around d/|d|: it is scanned at 15 angles 11.25 degrees apart, from d/|d| outwards (any
 /// sample with pen <= 0 is a separating axis: no contact, the usual early exit, mostly at the
 /// first sample; a root-free upper bound of pen, supportValueBound(), is tried first and decides
-/// a clear gap without the exact value), then the bracket around the best sample is refined by a
-/// root search on the exact derivative pen'(phi) = (s_A - s_B) . t (s the support points, t =
-/// perp(n)): Illinois (regula falsi) steps, with a bisection step whenever the bracket has not
-/// halved over two steps, until |pen'| is below 1e-12 of the shapes' size or the bracket below
-/// 1e-13 rad (at most contactRefineIterations steps; typically 10 for N = 2, 15 for N = 4, 25 for
-/// N = 8). At the root s_A - s_B is parallel to n, so the contact point, the midpoint of s_A and
-/// s_B, lies on the line of action through both support points: the torques are those of the
-/// potential k_n overlap^2 / 2 (energy consistent) and equal and opposite about it (angular
-/// momentum kept). Accuracy: the overlap to round-off, the normal to ~1e-13 rad. On near-flat faces
-/// (large N) the support point slides fast with the normal, ~|dphi|^(1/(N-1)), so the contact point
-/// of a face-to-face contact is known to ~1 % of the face width at N = 8 only. The scan can pick a
-/// local minimum that is not the global one when two are within its resolution of each other:
-/// found in 0.2 % of 20000 random placements (N in [2, 8], aspect ratios in [1, 3], overlaps up
-/// to 70 % of the size), never in those of them with overlaps below 5 % of the size.
+/// a clear gap without the exact value), then the root of the exact derivative
+/// pen'(phi) = (s_A - s_B) . t (s the support points, t = perp(n)) within a sample spacing of the
+/// best sample, downhill, is found by safeguarded Newton steps (refineNewton(), the second
+/// derivative from the radii of curvature, below), until |pen'| is below 1e-12 of the shapes'
+/// size, the bracket below 1e-13 rad or a Newton step short enough (at most
+/// contactRefineIterations steps). At the root s_A - s_B is parallel to n, so the contact point,
+/// the midpoint of s_A and s_B, lies on the line of action through both support points: the torques
+/// are those of the potential k_n overlap^2 / 2 (energy consistent) and equal and opposite about it
+/// (angular momentum kept). Accuracy: the overlap to round-off, the normal to ~1e-13 rad. On
+/// near-flat faces (large N) the support point slides fast with the normal, ~|dphi|^(1/(N-1)), so
+/// the contact point of a face-to-face contact is known to ~1 % of the face width at N = 8 only.
+/// The scan can pick a local minimum that is not the global one when two are within its resolution
+/// of each other: found in 0.2 % of 20000 random placements (N in [2, 8], aspect ratios in [1, 3],
+/// overlaps up to 70 % of the size), never in those of them with overlaps below 5 % of the size.
 /// Cold cost: 1-2 us per touching pair for N = 2, 3-7 us for N = 3-8 on one x86 core (the roots
 /// of the support function dominate).
 ///
@@ -58,7 +58,7 @@ namespace hikiln::dem {
 
 /// \brief The scan samples phi0 + j pi / (2 M + 2) for |j| <= M = contactScanHalf (11.25 degrees).
 inline constexpr int contactScanHalf = 7;
-/// \brief Most refinement steps (safeguarded Illinois or Newton).
+/// \brief Most refinement steps (safeguarded Newton).
 inline constexpr int contactRefineIterations = 64;
 /// \brief First step of a warm-started search away from the last normal where Newton gives none
 /// (rad); such steps double up to contactWarmReach.
@@ -147,6 +147,15 @@ struct NewtonTarget {
   bool converged = false;
 };
 
+/// \brief The Newton step of a minimisation in the angle from phi (slope g, curvature c).
+KOKKOS_INLINE_FUNCTION NewtonTarget plainNewtonTarget(double phi, double g, double c) {
+  NewtonTarget plain;
+  const double step = newtonStep(g, c);
+  plain.phi = phi + step;
+  plain.converged = step != 0.0 && math::fabs(step) <= contactAngleTolerance;
+  return plain;
+}
+
 /// \brief The Newton step of a minimisation at the angle phi (direction (nx, ny), slope g,
 /// curvature c) where shape s (orientation (cs, ss)) has the support `p`. Next to a face centre
 /// the slope grows like |x|^(1/(N-1)) with the angle x from the face normal, so Newton steps in
@@ -161,10 +170,7 @@ struct NewtonTarget {
 KOKKOS_INLINE_FUNCTION NewtonTarget faceNewtonTarget(const SuperquadricShape& s, double cs,
                                                      double ss, const Support& p, double nx,
                                                      double ny, double phi, double g, double c) {
-  NewtonTarget plain;
-  const double step = newtonStep(g, c);
-  plain.phi = phi + step;
-  plain.converged = step != 0.0 && math::fabs(step) <= contactAngleTolerance;
+  const NewtonTarget plain = plainNewtonTarget(phi, g, c);
   if (s.n == 2.0 || !(p.radius > 4.0 * (s.a + s.b)) || !(p.radius < 1e-3 * flatRadius) ||
       !(p.t > 0.0)) {
     return plain;
@@ -209,13 +215,7 @@ struct PairObjective {
     return worldSupportValueBound(A, ca, sa, nx, ny) + worldSupportValueBound(B, cb, sb, -nx, -ny) -
            (dx * nx + dy * ny);
   }
-  KOKKOS_INLINE_FUNCTION double slope(double nx, double ny) const {
-    const Support a = worldSupport(A, ca, sa, nx, ny);
-    const Support b = worldSupport(B, cb, sb, -nx, -ny);
-    last.keep(nx, ny, a, b);
-    return (a.x - b.x - dx) * (-ny) + (a.y - b.y - dy) * nx;
-  }
-  /// \brief value(), slope() and the second derivative pen'' = rho_A + rho_B - pen from one
+  /// \brief value(), its slope and its second derivative pen'' = rho_A + rho_B - pen from one
   /// pair of support points (h + h'' = rho, the radius of curvature at the support point, and
   /// (d . n)'' = -d . n).
   KOKKOS_INLINE_FUNCTION double evaluate(double nx, double ny, double& slopeOut,
@@ -247,66 +247,74 @@ struct DrumObjective {
   }
   /// \brief An upper bound of value(): the value itself (the drum's scan never stops early).
   KOKKOS_INLINE_FUNCTION double valueBound(double nx, double ny) const { return value(nx, ny); }
-  KOKKOS_INLINE_FUNCTION double slope(double nx, double ny) const {
-    const Support s = worldSupport(S, c, sn, nx, ny);
+  /// \brief value(), its slope and its second derivative -value - rho (h + h'' = rho, the
+  /// radius of curvature at the support point, and (x_c . n)'' = -x_c . n).
+  KOKKOS_INLINE_FUNCTION double evaluate(double nx, double ny, double& slopeOut,
+                                         double& curvatureOut) const {
+    const Support s = worldSupport<true>(S, c, sn, nx, ny);
     last.keep(nx, ny, s, s);
-    return -((x + s.x) * (-ny) + (y + s.y) * nx);
+    slopeOut = -((x + s.x) * (-ny) + (y + s.y) * nx);
+    const double value = -(x * nx + y * ny + s.h);
+    curvatureOut = -value - s.radius;
+    return value;
+  }
+  /// \brief Where a Newton step from phi lands: the deepest point is a corner or an ellipse's
+  /// end, where the outline is smooth, so in the angle.
+  KOKKOS_INLINE_FUNCTION NewtonTarget newtonTarget(double phi, double g, double curv) const {
+    return plainNewtonTarget(phi, g, curv);
   }
 };
 
-/// \brief Root of f's slope in the bracket [lo, hi] with slope glo < 0 < ghi (see the file
-/// comment): Illinois (regula falsi) steps, which converge fast where pen is smooth; a bisection
-/// step whenever the bracket has not halved over two steps, which guarantees progress at near-flat
-/// faces, where the slope behaves like |phi - phi*|^(1/(N-1)). Returns the last iterate.
+/// \brief Root of f's slope in the bracket [lo, hi] (slope glo < 0 < ghi), from the iterate phi
+/// (one of its ends, slope g and curvature c there): Newton steps while they land inside the
+/// bracket and at least halve the step before last, bisection otherwise (near-flat faces, where
+/// the slope behaves like |phi - phi*|^(1/(N-1)) and Newton overshoots; f.newtonTarget() steps in
+/// the support's root there); stops when |slope| <= tolerance, when the bracket is narrower than
+/// contactAngleTolerance or after a converged Newton step (NewtonTarget). Returns the last
+/// iterate.
 template <class Objective>
-KOKKOS_INLINE_FUNCTION double refineBracket(const Objective& f, double lo, double hi, double glo,
-                                            double ghi, double slopeScale) {
-  const double tolerance = contactSlopeTolerance * slopeScale;
-  int side = 0;
-  bool bisect = false;
-  double width1 = hi - lo, width2 = width1;
-  double phiOut = 0.5 * (lo + hi);
+KOKKOS_INLINE_FUNCTION double refineNewton(const Objective& f, double lo, double hi, double phi,
+                                           double g, double c, double tolerance) {
+  double stepOld = hi - lo, step = stepOld;
   for (int it = 0; it < contactRefineIterations; ++it) {
-    double phi = bisect ? 0.5 * (lo + hi) : (lo * ghi - hi * glo) / (ghi - glo);
-    if (!(phi > lo && phi < hi)) {
+    const NewtonTarget target = f.newtonTarget(phi, g, c);
+    if (target.converged) {
+      break; // the root is closer to phi than that short step
+    }
+    const double newton = target.phi;
+    const double stepNewton = math::fabs(newton - phi);
+    const bool takeNewton =
+        newton > lo && newton < hi && stepNewton > 0.0 && stepNewton <= 0.5 * stepOld;
+    if (takeNewton) {
+      stepOld = step;
+      step = stepNewton;
+      phi = newton;
+    } else {
+      stepOld = step;
+      step = 0.5 * (hi - lo);
       phi = 0.5 * (lo + hi);
     }
-    const double g = f.slope(math::cos(phi), math::sin(phi));
-    phiOut = phi;
+    f.evaluate(math::cos(phi), math::sin(phi), g, c);
     if (math::fabs(g) <= tolerance) {
       break;
     }
     if (g > 0.0) {
       hi = phi;
-      ghi = g;
-      if (side == 1) {
-        glo *= 0.5;
-      }
-      side = 1;
     } else {
       lo = phi;
-      glo = g;
-      if (side == -1) {
-        ghi *= 0.5;
-      }
-      side = -1;
     }
-    const double width = hi - lo;
-    if (width <= contactAngleTolerance) {
+    if (hi - lo <= contactAngleTolerance) {
       break;
     }
-    bisect = width > 0.5 * width2;
-    width2 = width1;
-    width1 = width;
   }
-  return phiOut;
+  return phi;
 }
 
 /// \brief Minimises f over the angles (phi0 - halfWidth, phi0 + halfWidth), halfWidth <= pi/2:
 /// 2 M + 1 samples from phi0 outwards (a separating direction is usually near phi0), then the
-/// root of the slope in the bracket of the best sample. Returns false at once when
-/// stopAtNonPositive and a sample has f <= 0 (phiOut: that sample, a separating axis of a pair).
-/// slopeScale sets the slope tolerance (a length).
+/// root of the slope within a sample spacing of the best sample (refineNewton()). Returns false at
+/// once when stopAtNonPositive and a sample has f <= 0 (phiOut: that sample, a separating axis of a
+/// pair). slopeScale sets the slope tolerance (a length).
 template <class Objective>
 KOKKOS_INLINE_FUNCTION bool minimiseHalfCircle(const Objective& f, double phi0, double halfWidth,
                                                bool stopAtNonPositive, double slopeScale,
@@ -346,72 +354,22 @@ KOKKOS_INLINE_FUNCTION bool minimiseHalfCircle(const Objective& f, double phi0, 
     }
   }
   const double phiBest = phi0 + best * step;
-  double lo = phiBest - step, hi = phiBest + step; // at |best| = M: the ends of the range
-  const auto slopeAt = [&](double phi) { return f.slope(math::cos(phi), math::sin(phi)); };
-  double glo = slopeAt(lo), ghi = slopeAt(hi);
+  double g = 0.0, c = 0.0;
+  f.evaluate(math::cos(phiBest), math::sin(phiBest), g, c);
   phiOut = phiBest;
-  if (!(glo < 0.0 && ghi > 0.0)) { // narrow to the half that brackets the minimum
-    const double g = slopeAt(phiBest);
-    if (g < 0.0 && ghi > 0.0) {
-      lo = phiBest;
-      glo = g;
-    } else if (g > 0.0 && glo < 0.0) {
-      hi = phiBest;
-      ghi = g;
-    } else {
-      return true; // the best sample is the minimum (or no bracket): keep it
-    }
+  const double tolerance = contactSlopeTolerance * slopeScale;
+  if (math::fabs(g) <= tolerance) {
+    return true;
   }
-  phiOut = refineBracket(f, lo, hi, glo, ghi, slopeScale);
+  // the minimum lies within a step of the best sample, downhill (at |best| = M the step
+  // reaches past the range)
+  phiOut = g > 0.0 ? refineNewton(f, phiBest - step, phiBest, phiBest, g, c, tolerance)
+                   : refineNewton(f, phiBest, phiBest + step, phiBest, g, c, tolerance);
   return true;
 }
 
 /// \brief Outcome of a warm-started pair search.
 enum class WarmStart { Separated, Found, Failed };
-
-/// \brief Root of f's slope in the bracket [lo, hi] (slope glo < 0 < ghi), from the iterate phi
-/// (one of its ends, slope g and curvature c there): Newton steps while they land inside the
-/// bracket and at least halve the step before last, bisection otherwise (near-flat faces, where
-/// the slope behaves like |phi - phi*|^(1/(N-1)) and Newton overshoots; f.newtonTarget() steps in
-/// the support's root there); stops as refineBracket() or after a converged Newton step
-/// (NewtonTarget). Returns the last iterate.
-template <class Objective>
-KOKKOS_INLINE_FUNCTION double refineNewton(const Objective& f, double lo, double hi, double phi,
-                                           double g, double c, double tolerance) {
-  double stepOld = hi - lo, step = stepOld;
-  for (int it = 0; it < contactRefineIterations; ++it) {
-    const NewtonTarget target = f.newtonTarget(phi, g, c);
-    if (target.converged) {
-      break; // the root is closer to phi than that short step
-    }
-    const double newton = target.phi;
-    const double stepNewton = math::fabs(newton - phi);
-    const bool takeNewton =
-        newton > lo && newton < hi && stepNewton > 0.0 && stepNewton <= 0.5 * stepOld;
-    if (takeNewton) {
-      stepOld = step;
-      step = stepNewton;
-      phi = newton;
-    } else {
-      stepOld = step;
-      step = 0.5 * (hi - lo);
-      phi = 0.5 * (lo + hi);
-    }
-    f.evaluate(math::cos(phi), math::sin(phi), g, c);
-    if (math::fabs(g) <= tolerance) {
-      break;
-    }
-    if (g > 0.0) {
-      hi = phi;
-    } else {
-      lo = phi;
-    }
-    if (hi - lo <= contactAngleTolerance) {
-      break;
-    }
-  }
-  return phi;
-}
 
 /// \brief Local minimum of a pair's pen next to the angle `guess` (the last normal of the pair):
 /// pen(guess) <= 0 is a separating axis (Separated); otherwise Newton steps on pen' = 0 downhill
