@@ -265,8 +265,9 @@ struct DrumObjective {
   }
 };
 
-/// \brief Root of f's slope in the bracket [lo, hi] (slope glo < 0 < ghi), from the iterate phi
-/// (one of its ends, slope g and curvature c there): Newton steps while they land inside the
+/// \brief Root of f's slope in the bracket [lo, hi] (slope < 0 at lo, > 0 at hi; the scans presume
+/// the far end's sign, see minimiseHalfCircle()), from the iterate phi (one of its ends, slope g
+/// and curvature c there): Newton steps while they land inside the
 /// bracket and at least halve the step before last, bisection otherwise (near-flat faces, where
 /// the slope behaves like |phi - phi*|^(1/(N-1)) and Newton overshoots; f.newtonTarget() steps in
 /// the support's root there); stops when |slope| <= tolerance, when the bracket is narrower than
