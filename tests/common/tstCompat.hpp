@@ -1,10 +1,14 @@
 // Every wrapper of kernels/common/Compat.hpp, evaluated inside a kernel on TEST_EXECSPACE and
-// compared with the C++ standard library on the host.
+// compared with the C++ standard library on the host; math::wholeRoot() (Roots.hpp) against
+// long double roots.
 #include "kernels/common/Compat.hpp"
+#include "kernels/common/Roots.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cfloat>
 #include <cmath>
+#include <random>
 
 namespace {
 
@@ -86,6 +90,83 @@ TEST(TEST_CATEGORY, compat_scoped_region_and_version) {
   const std::string v = hikiln::kokkosVersionString();
   EXPECT_EQ(v.substr(0, v.find('.')), std::to_string(KOKKOS_VERSION / 10000));
   EXPECT_GE(KOKKOS_VERSION, 30400);
+}
+
+// x^(1/3) and x^(1/5) of n values log-uniform over the normal doubles, in a kernel.
+Kokkos::View<double**, Kokkos::HostSpace> wholeRootsInKernel(int n) {
+  using space = TEST_EXECSPACE;
+  Kokkos::View<double**, space::memory_space> out("hikiln::test::roots", n, 3);
+  Kokkos::parallel_for(
+      "hikiln::test::whole_roots", Kokkos::RangePolicy<space>(space(), 0, n), KOKKOS_LAMBDA(int i) {
+        const double x = hikiln::math::exp(-700.0 + 1400.0 * (i + 0.5) / n);
+        out(i, 0) = x;
+        out(i, 1) = hikiln::math::wholeRoot<3>(x);
+        out(i, 2) = hikiln::math::wholeRoot<5>(x);
+      });
+  return Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, out);
+}
+
+// Error of a root of x in units of the last place of the exact root (the spacing above it).
+template <int K> double rootErrorInUlps(double x, double root) {
+  const long double exact =
+      K == 3 ? std::cbrt(static_cast<long double>(x)) : std::pow(static_cast<long double>(x), 0.2L);
+  const double ulp =
+      std::nextafter(static_cast<double>(exact), DBL_MAX) - static_cast<double>(exact);
+  return static_cast<double>(std::fabs(root - exact)) / ulp;
+}
+
+TEST(TEST_CATEGORY, compat_whole_roots_within_three_ulps) {
+  // On the host the roots are a polynomial and a Newton step (no library call); the blocky
+  // narrow phase takes two per support evaluation, so they must be as good as cbrt and pow.
+  double worst3 = 0.0, worst5 = 0.0;
+  std::mt19937_64 gen(7);
+  std::uniform_real_distribution<double> exponent(-708.0, 709.0);
+  for (int i = 0; i < 200000; ++i) {
+    const double x = std::exp(exponent(gen));
+    worst3 = std::max(worst3, rootErrorInUlps<3>(x, hikiln::math::wholeRoot<3>(x)));
+    worst5 = std::max(worst5, rootErrorInUlps<5>(x, hikiln::math::wholeRoot<5>(x)));
+  }
+  // every mantissa interval's ends and the exponents' residues modulo 3 and 5
+  for (int e = -1022; e <= 1023; ++e) {
+    for (const double m : {1.0, 1.0 + DBL_EPSILON, 1.5, 2.0 - DBL_EPSILON}) {
+      const double x = std::ldexp(m, e);
+      worst3 = std::max(worst3, rootErrorInUlps<3>(x, hikiln::math::wholeRoot<3>(x)));
+      worst5 = std::max(worst5, rootErrorInUlps<5>(x, hikiln::math::wholeRoot<5>(x)));
+    }
+  }
+  double worstLibrary = 0.0; // for scale: the C library's cbrt on the same values
+  for (int e = -1022; e <= 1023; ++e) {
+    for (const double m : {1.0, 1.0 + DBL_EPSILON, 1.5, 2.0 - DBL_EPSILON}) {
+      const double x = std::ldexp(m, e);
+      worstLibrary = std::max(worstLibrary, rootErrorInUlps<3>(x, std::cbrt(x)));
+    }
+  }
+  std::printf("whole roots on the host: largest error %.2f ulp (cube), %.2f ulp (fifth); "
+              "std::cbrt %.2f ulp on the same powers of two\n",
+              worst3, worst5, worstLibrary);
+  EXPECT_LE(worst3, 3.0);
+  EXPECT_LE(worst5, 3.0);
+  // exact cubes and fifth powers stay exact; zero, subnormals and specials take the library path
+  EXPECT_EQ(hikiln::math::wholeRoot<3>(1.0), 1.0);
+  EXPECT_EQ(hikiln::math::wholeRoot<3>(27.0), 3.0);
+  EXPECT_EQ(hikiln::math::wholeRoot<3>(0.125), 0.5);
+  EXPECT_EQ(hikiln::math::wholeRoot<5>(1.0), 1.0);
+  EXPECT_EQ(hikiln::math::wholeRoot<5>(32.0), 2.0);
+  EXPECT_EQ(hikiln::math::wholeRoot<3>(0.0), 0.0);
+  EXPECT_TRUE(std::isnan(hikiln::math::wholeRoot<5>(std::nan(""))));
+  EXPECT_EQ(hikiln::math::wholeRoot<5>(0.0), 0.0);
+  EXPECT_NEAR(hikiln::math::wholeRoot<3>(1e-310), std::cbrt(1e-310), 1e-118);
+  EXPECT_TRUE(std::isnan(hikiln::math::wholeRoot<3>(std::nan(""))));
+  EXPECT_TRUE(std::isinf(hikiln::math::wholeRoot<3>(HUGE_VAL)));
+
+  // the same inside a kernel: on a device the library's cbrt, and pow(x, 0.2), whose exponent is
+  // 1/5 only to 1.1e-17, so that its root is off by up to that times |ln x|
+  const auto h = wholeRootsInKernel(4096);
+  for (int i = 0; i < static_cast<int>(h.extent(0)); ++i) {
+    const double x = h(i, 0), fifth = std::pow(static_cast<long double>(x), 0.2L);
+    EXPECT_LE(rootErrorInUlps<3>(x, h(i, 1)), 3.0) << x;
+    EXPECT_LE(std::fabs(h(i, 2) - fifth) / fifth, 4.5e-16 + 1.2e-17 * std::fabs(std::log(x))) << x;
+  }
 }
 
 } // namespace

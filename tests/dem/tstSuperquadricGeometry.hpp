@@ -175,6 +175,24 @@ TEST(TEST_CATEGORY, superquadric_support_bound) {
   }
 }
 
+TEST(TEST_CATEGORY, superquadric_inverse_root_of_the_support) {
+  // 1 / g = q^(-1/N) for q in [1, 2]: a fit and a Newton step for N = 3, 4, 6, the library for
+  // the others; within 3 ulp of the exact value, and exact at q = 1
+  for (double n : {2.0, 3.0, 4.0, 5.0, 6.0, 8.0}) {
+    double worst = 0.0;
+    for (int i = 0; i <= 100000; ++i) {
+      const double q = 1.0 + i / 100000.0;
+      const long double exact = std::pow(static_cast<long double>(q), -1.0L / n);
+      const double ulp =
+          std::nextafter(static_cast<double>(exact), 2.0) - static_cast<double>(exact);
+      worst = std::max(
+          worst, static_cast<double>(std::fabs(detail::inverseRootOnOneTwo(n, q) - exact)) / ulp);
+    }
+    EXPECT_LE(worst, 3.0) << "N " << n;
+    EXPECT_EQ(detail::inverseRootOnOneTwo(n, 1.0), 1.0) << "N " << n;
+  }
+}
+
 TEST(TEST_CATEGORY, superquadric_support_radius_is_h_plus_h2) {
   // the radius of curvature at the support point (the warm search's pen'') against h + h'' of the
   // support value over the direction's angle by central differences; the circle's radius exactly;
