@@ -39,6 +39,8 @@
 /// they overshoot, and the scan when no sign change lies within 0.5 rad (3.1 evaluations a search
 /// for N = 4 and 3.3 for N = 6 in a flowing drum: docs/blocky-particles.md). A warm-started
 /// search follows its basin of pen continuously; the cold scan takes the deepest sampled one.
+/// The searches carry each angle with its direction (detail::Heading) and turn the direction by
+/// the series of cos and sin for steps below 1e-2 rad, so most of their steps take no sincos.
 ///
 /// Drum: overlap = max over the outline of |p| - R = max_n (x_c . n + h(n)) - R, found the same way
 /// around x_c/|x_c|; the contact point is the particle's deepest point. Flat wall: the support
@@ -265,17 +267,52 @@ struct DrumObjective {
   }
 };
 
+/// \brief An angle and its unit direction, carried through a search so that its small turns need
+/// no cos and sin (a sincos per evaluation was a tenth of a flowing drum's time).
+struct Heading {
+  double phi = 0.0, x = 1.0, y = 0.0;
+};
+
+/// \brief The heading of the angle phi.
+KOKKOS_INLINE_FUNCTION Heading headingOf(double phi) {
+  return Heading{phi, math::cos(phi), math::sin(phi)};
+}
+
+/// \brief The heading of the vector (x, y) (of angle 0 for the zero vector).
+KOKKOS_INLINE_FUNCTION Heading headingAlong(double x, double y) {
+  if (x == 0.0 && y == 0.0) {
+    return Heading{};
+  }
+  const double length = math::sqrt(x * x + y * y);
+  return Heading{math::atan2(y, x), x / length, y / length};
+}
+
+/// \brief The heading of the angle phi, turned from `from`: for turns d below 1e-2 rad by the
+/// series of cos d and sin d to d^7 (the first term left out is below 3e-21), headingOf(phi)
+/// otherwise.
+KOKKOS_INLINE_FUNCTION Heading turnedTo(const Heading& from, double phi) {
+  const double d = phi - from.phi;
+  if (!(math::fabs(d) < 1e-2)) {
+    return headingOf(phi);
+  }
+  const double d2 = d * d;
+  const double c = 1.0 - d2 * (0.5 - d2 * (1.0 / 24.0 - d2 * (1.0 / 720.0)));
+  const double s = d * (1.0 - d2 * (1.0 / 6.0 - d2 * (1.0 / 120.0 - d2 * (1.0 / 5040.0))));
+  return Heading{phi, c * from.x - s * from.y, s * from.x + c * from.y};
+}
+
 /// \brief Root of f's slope in the bracket [lo, hi] (slope < 0 at lo, > 0 at hi; the scans presume
-/// the far end's sign, see minimiseHalfCircle()), from the iterate phi (one of its ends, slope g
+/// the far end's sign, see minimiseHalfCircle()), from the iterate `at` (one of its ends, slope g
 /// and curvature c there): Newton steps while they land inside the
 /// bracket and at least halve the step before last, bisection otherwise (near-flat faces, where
 /// the slope behaves like |phi - phi*|^(1/(N-1)) and Newton overshoots; f.newtonTarget() steps in
 /// the support's root there); stops when |slope| <= tolerance, when the bracket is narrower than
 /// contactAngleTolerance or after a converged Newton step (NewtonTarget). Returns the last
-/// iterate.
+/// iterate, the direction of f's last evaluation.
 template <class Objective>
-KOKKOS_INLINE_FUNCTION double refineNewton(const Objective& f, double lo, double hi, double phi,
-                                           double g, double c, double tolerance) {
+KOKKOS_INLINE_FUNCTION Heading refineNewton(const Objective& f, double lo, double hi, Heading at,
+                                            double g, double c, double tolerance) {
+  double phi = at.phi;
   double stepOld = hi - lo, step = stepOld;
   for (int it = 0; it < contactRefineIterations; ++it) {
     const NewtonTarget target = f.newtonTarget(phi, g, c);
@@ -295,7 +332,8 @@ KOKKOS_INLINE_FUNCTION double refineNewton(const Objective& f, double lo, double
       step = 0.5 * (hi - lo);
       phi = 0.5 * (lo + hi);
     }
-    f.evaluate(math::cos(phi), math::sin(phi), g, c);
+    at = turnedTo(at, phi);
+    f.evaluate(at.x, at.y, g, c);
     if (math::fabs(g) <= tolerance) {
       break;
     }
@@ -308,30 +346,31 @@ KOKKOS_INLINE_FUNCTION double refineNewton(const Objective& f, double lo, double
       break;
     }
   }
-  return phi;
+  return at;
 }
 
-/// \brief Minimises f over the angles (phi0 - halfWidth, phi0 + halfWidth), halfWidth <= pi/2:
-/// 2 M + 1 samples from phi0 outwards (a separating direction is usually near phi0), then the
-/// root of the slope within a sample spacing of the best sample (refineNewton()). Returns false at
-/// once when stopAtNonPositive and a sample has f <= 0 (phiOut: that sample, a separating axis of a
-/// pair). slopeScale sets the slope tolerance (a length).
+/// \brief Minimises f over the angles (phi0 - halfWidth, phi0 + halfWidth), halfWidth <= pi/2,
+/// phi0 = centre.phi: 2 M + 1 samples from phi0 outwards (a separating direction is usually near
+/// phi0), then the root of the slope within a sample spacing of the best sample (refineNewton()).
+/// Returns false at once when stopAtNonPositive and a sample has f <= 0 (out: that sample, a
+/// separating axis of a pair). slopeScale sets the slope tolerance (a length).
 template <class Objective>
-KOKKOS_INLINE_FUNCTION bool minimiseHalfCircle(const Objective& f, double phi0, double halfWidth,
-                                               bool stopAtNonPositive, double slopeScale,
-                                               double& phiOut) {
+KOKKOS_INLINE_FUNCTION bool minimiseHalfCircle(const Objective& f, const Heading& centre,
+                                               double halfWidth, bool stopAtNonPositive,
+                                               double slopeScale, Heading& out) {
   constexpr int M = contactScanHalf;
+  const double phi0 = centre.phi;
   const double step = halfWidth / (M + 1);
   const double cs = math::cos(step), ss = math::sin(step);
-  double upx = math::cos(phi0), upy = math::sin(phi0), dnx = upx, dny = upy;
+  double upx = centre.x, upy = centre.y, dnx = upx, dny = upy;
   // a sample whose bound (no roots) is <= 0 already proves a separating axis
   const auto sample = [&](double nx, double ny) {
     return stopAtNonPositive && !(f.valueBound(nx, ny) > 0.0) ? 0.0 : f.value(nx, ny);
   };
   int best = 0;
-  double bestValue = sample(upx, upy);
+  double bestValue = sample(upx, upy), bestX = upx, bestY = upy;
   if (stopAtNonPositive && !(bestValue > 0.0)) {
-    phiOut = phi0;
+    out = centre;
     return false; // a separating axis
   }
   for (int j = 1; j <= M; ++j) {
@@ -342,30 +381,34 @@ KOKKOS_INLINE_FUNCTION bool minimiseHalfCircle(const Objective& f, double phi0, 
     dnx = dx;
     const double vu = sample(upx, upy), vd = sample(dnx, dny);
     if (stopAtNonPositive && !(vu > 0.0 && vd > 0.0)) {
-      phiOut = phi0 + (vu > 0.0 ? -j : j) * step;
+      out = vu > 0.0 ? Heading{phi0 - j * step, dnx, dny} : Heading{phi0 + j * step, upx, upy};
       return false;
     }
     if (vu < bestValue) {
       best = j;
       bestValue = vu;
+      bestX = upx;
+      bestY = upy;
     }
     if (vd < bestValue) {
       best = -j;
       bestValue = vd;
+      bestX = dnx;
+      bestY = dny;
     }
   }
   const double phiBest = phi0 + best * step;
   double g = 0.0, c = 0.0;
-  f.evaluate(math::cos(phiBest), math::sin(phiBest), g, c);
-  phiOut = phiBest;
+  f.evaluate(bestX, bestY, g, c);
+  out = Heading{phiBest, bestX, bestY};
   const double tolerance = contactSlopeTolerance * slopeScale;
   if (math::fabs(g) <= tolerance) {
     return true;
   }
   // the minimum lies within a step of the best sample, downhill (at |best| = M the step
   // reaches past the range)
-  phiOut = g > 0.0 ? refineNewton(f, phiBest - step, phiBest, phiBest, g, c, tolerance)
-                   : refineNewton(f, phiBest, phiBest + step, phiBest, g, c, tolerance);
+  out = g > 0.0 ? refineNewton(f, phiBest - step, phiBest, out, g, c, tolerance)
+                : refineNewton(f, phiBest, phiBest + step, out, g, c, tolerance);
   return true;
 }
 
@@ -380,44 +423,46 @@ enum class WarmStart { Separated, Found, Failed };
 /// (Found). Failed when the walk leaves contactWarmReach of the guess: the caller scans.
 template <class Objective>
 KOKKOS_INLINE_FUNCTION WarmStart minimiseFromGuess(const Objective& f, double guess,
-                                                   double slopeScale, double& phiOut) {
+                                                   double slopeScale, Heading& out) {
   double g = 0.0, c = 0.0;
-  if (!(f.evaluate(math::cos(guess), math::sin(guess), g, c) > 0.0)) {
+  Heading near = headingOf(guess);
+  if (!(f.evaluate(near.x, near.y, g, c) > 0.0)) {
     return WarmStart::Separated;
   }
-  phiOut = guess;
+  out = near;
   const double tolerance = contactSlopeTolerance * slopeScale;
   if (math::fabs(g) <= tolerance) {
     return WarmStart::Found;
   }
   const double direction = g > 0.0 ? -1.0 : 1.0; // downhill
-  double near = guess, gNear = g, delta = 0.0;
+  double gNear = g, delta = 0.0;
   bool slow = false;
   for (int it = 0; it < contactRefineIterations; ++it) {
-    const NewtonTarget target = f.newtonTarget(near, gNear, c);
+    const NewtonTarget target = f.newtonTarget(near.phi, gNear, c);
     if (target.converged) {
-      return WarmStart::Found; // phiOut: near
+      return WarmStart::Found; // out: near
     }
-    double step = math::fabs(target.phi - near);
+    double step = math::fabs(target.phi - near.phi);
     if (!(step > 0.0)) {
       step = delta > 0.0 ? 2.0 * delta : contactWarmStep;
     } else if (slow && step < 2.0 * delta) {
       step = 2.0 * delta;
     }
     delta = step;
-    const double far = near + direction * delta;
-    if (!(math::fabs(far - guess) <= contactWarmReach)) {
+    const double farPhi = near.phi + direction * delta;
+    if (!(math::fabs(farPhi - guess) <= contactWarmReach)) {
       return WarmStart::Failed;
     }
+    const Heading far = turnedTo(near, farPhi);
     double gFar = 0.0;
-    f.evaluate(math::cos(far), math::sin(far), gFar, c);
-    phiOut = far;
+    f.evaluate(far.x, far.y, gFar, c);
+    out = far;
     if (math::fabs(gFar) <= tolerance) {
       return WarmStart::Found;
     }
     if (direction * gFar > 0.0) { // the slope changed sign between near and far
-      phiOut = direction > 0.0 ? refineNewton(f, near, far, far, gFar, c, tolerance)
-                               : refineNewton(f, far, near, far, gFar, c, tolerance);
+      out = direction > 0.0 ? refineNewton(f, near.phi, far.phi, far, gFar, c, tolerance)
+                            : refineNewton(f, far.phi, near.phi, far, gFar, c, tolerance);
       return WarmStart::Found;
     }
     slow = !(math::fabs(gFar) < 0.5 * math::fabs(gNear));
@@ -467,10 +512,10 @@ KOKKOS_INLINE_FUNCTION bool superquadricPair(const SuperquadricShape& A, BodyAxi
     return false;
   }
   const double scale = A.a + A.b + B.a + B.b;
-  double phi = 0.0;
+  detail::Heading normal;
   detail::WarmStart start = detail::WarmStart::Failed;
   if (kind == PairGuess::Normal) {
-    start = detail::minimiseFromGuess(f, guess, scale, phi);
+    start = detail::minimiseFromGuess(f, guess, scale, normal);
   } else if (kind == PairGuess::Axis) { // the bound first: no roots for a clear gap
     const double gx = math::cos(guess), gy = math::sin(guess);
     if (!(f.valueBound(gx, gy) > 0.0) || !(f.value(gx, gy) > 0.0)) {
@@ -483,16 +528,16 @@ KOKKOS_INLINE_FUNCTION bool superquadricPair(const SuperquadricShape& A, BodyAxi
     return false;
   }
   if (start == detail::WarmStart::Failed) {
-    const double phi0 = (dx == 0.0 && dy == 0.0) ? 0.0 : math::atan2(dy, dx);
-    if (!detail::minimiseHalfCircle(f, phi0, 0.5 * constants::pi, true, scale, phi)) {
-      g.angle = phi;
+    if (!detail::minimiseHalfCircle(f, detail::headingAlong(dx, dy), 0.5 * constants::pi, true,
+                                    scale, normal)) {
+      g.angle = normal.phi;
       g.axis = true;
       return false;
     }
   }
-  g.angle = phi; // the normal, or a separating axis when pen(phi) <= 0
+  g.angle = normal.phi; // the normal, or a separating axis when pen(phi) <= 0
   g.axis = true;
-  const double nx = math::cos(phi), ny = math::sin(phi);
+  const double nx = normal.x, ny = normal.y;
   const bool known = f.last.at(nx, ny);
   const Support a = known ? f.last.first : worldSupport(A, f.ca, f.sa, nx, ny);
   const Support b = known ? f.last.second : worldSupport(B, f.cb, f.sb, -nx, -ny);
@@ -536,10 +581,10 @@ KOKKOS_INLINE_FUNCTION bool superquadricDrum(const SuperquadricShape& s, BodyAxi
   // of x / |x| (|p| <= the rectangle's half diagonal): the scan covers only that range
   const double centre = math::sqrt(x * x + y * y), diagonal = math::sqrt(s.a * s.a + s.b * s.b);
   const double halfWidth = 0.5 * constants::pi * (diagonal < centre ? diagonal / centre : 1.0);
-  const double phi0 = (x == 0.0 && y == 0.0) ? 0.0 : math::atan2(y, x);
-  double phi = 0.0;
-  detail::minimiseHalfCircle(f, phi0, halfWidth, false, s.a + s.b + radius, phi);
-  const double nx = math::cos(phi), ny = math::sin(phi);
+  detail::Heading normal;
+  detail::minimiseHalfCircle(f, detail::headingAlong(x, y), halfWidth, false, s.a + s.b + radius,
+                             normal);
+  const double nx = normal.x, ny = normal.y;
   const Support p = f.last.at(nx, ny) ? f.last.first : worldSupport(s, f.c, f.sn, nx, ny);
   const double overlap = x * nx + y * ny + p.h - radius;
   if (!(overlap > 0.0)) {
