@@ -19,7 +19,7 @@
 /// contactRefineIterations steps). At the root s_A - s_B is parallel to n, so the contact point,
 /// the midpoint of s_A and s_B, lies on the line of action through both support points: the torques
 /// are those of the potential k_n overlap^2 / 2 (energy consistent) and equal and opposite about it
-/// (angular momentum kept). Accuracy: the overlap to round-off, the normal to ~1e-13 rad. On
+/// (angular momentum kept). Accuracy: the overlap to round-off, the normal to ~1e-12 rad. On
 /// near-flat faces (large N) the support point slides fast with the normal, ~|dphi|^(1/(N-1)), so
 /// the contact point of a face-to-face contact is known to ~1 % of the face width at N = 8 only.
 /// The scan can pick a local minimum that is not the global one when two are within its resolution
@@ -36,11 +36,13 @@
 /// Newton steps on pen' = 0 with the exact pen'' = rho_A + rho_B - pen (rho the radii of
 /// curvature at the support points, from the same roots), taken in the support's root next to a
 /// face centre, where the slope behaves like |x|^(1/(N-1)) (faceNewtonTarget()), bisection where
-/// they overshoot, and the scan when no sign change lies within 0.5 rad (3.1 evaluations a search
-/// for N = 4 and 3.3 for N = 6 in a flowing drum: docs/blocky-particles.md). A warm-started
-/// search follows its basin of pen continuously; the cold scan takes the deepest sampled one.
-/// The searches carry each angle with its direction (detail::Heading) and turn the direction by
-/// the series of cos and sin for steps below 1e-2 rad, so most of their steps take no sincos.
+/// they overshoot, and the scan when no sign change lies within 0.5 rad. A Newton step in the
+/// angle below contactExtrapolateStep is the last: it is taken without evaluating the supports
+/// again, which follow it to second order (LastSupports::advance()), so a search from a normal a
+/// step old mostly takes two evaluations (docs/blocky-particles.md). A warm-started search
+/// follows its basin of pen continuously; the cold scan takes the deepest sampled one. The
+/// searches carry each angle with its direction (detail::Heading) and turn the direction by the
+/// series of cos and sin for steps below 1e-2 rad, so most of their steps take no sincos.
 ///
 /// Drum: overlap = max over the outline of |p| - R = max_n (x_c . n + h(n)) - R, found the same way
 /// around x_c/|x_c|; the contact point is the particle's deepest point. Flat wall: the support
@@ -76,6 +78,11 @@ inline constexpr double contactAngleTolerance = 1e-13;
 /// \brief ... or, next to a face centre, a converging Newton step in the support's root this short
 /// (the contact point moves with the root, not with the angle: faceNewtonTarget()).
 inline constexpr double contactRootTolerance = 1e-10;
+/// \brief A Newton step in the angle this short (rad) ends a search without a further
+/// evaluation: the step is taken and the support points follow it to second order
+/// (LastSupports::advance()); Newton's error after it, of order step^2, is below the angle
+/// tolerance's order. Most warm searches end this way after two evaluations instead of three.
+inline constexpr double contactExtrapolateStep = 1e-7;
 
 /// \brief Result of a narrow-phase test.
 struct ContactGeometry {
@@ -122,6 +129,40 @@ KOKKOS_INLINE_FUNCTION double worldSupportValueBound(const SuperquadricShape& s,
 
 namespace detail {
 
+/// \brief An angle and its unit direction, carried through a search so that its small turns need
+/// no cos and sin (a sincos per evaluation was a tenth of a flowing drum's time).
+struct Heading {
+  double phi = 0.0, x = 1.0, y = 0.0;
+};
+
+/// \brief The heading of the angle phi.
+KOKKOS_INLINE_FUNCTION Heading headingOf(double phi) {
+  return Heading{phi, math::cos(phi), math::sin(phi)};
+}
+
+/// \brief The heading of the vector (x, y) (of angle 0 for the zero vector).
+KOKKOS_INLINE_FUNCTION Heading headingAlong(double x, double y) {
+  if (x == 0.0 && y == 0.0) {
+    return Heading{};
+  }
+  const double length = math::sqrt(x * x + y * y);
+  return Heading{math::atan2(y, x), x / length, y / length};
+}
+
+/// \brief The heading of the angle phi, turned from `from`: for turns d below 1e-2 rad by the
+/// series of cos d and sin d to d^7 (the first term left out is below 3e-21), headingOf(phi)
+/// otherwise.
+KOKKOS_INLINE_FUNCTION Heading turnedTo(const Heading& from, double phi) {
+  const double d = phi - from.phi;
+  if (!(math::fabs(d) < 1e-2)) {
+    return headingOf(phi);
+  }
+  const double d2 = d * d;
+  const double c = 1.0 - d2 * (0.5 - d2 * (1.0 / 24.0 - d2 * (1.0 / 720.0)));
+  const double s = d * (1.0 - d2 * (1.0 / 6.0 - d2 * (1.0 / 120.0 - d2 * (1.0 / 5040.0))));
+  return Heading{phi, c * from.x - s * from.y, s * from.x + c * from.y};
+}
+
 /// \brief The support points of an objective's last evaluation with both, in the direction
 /// (nx, ny). A search ends on its result's direction, so the caller takes the contact from them
 /// instead of taking the roots again (the same numbers).
@@ -135,6 +176,25 @@ struct LastSupports {
     second = q;
   }
   KOKKOS_INLINE_FUNCTION bool at(double ux, double uy) const { return ux == nx && uy == ny; }
+  /// \brief Moves both supports (radii kept by the evaluation) to the direction turned by a
+  /// short step s, without roots: a support point moves along the tangent t at the rate of its
+  /// radius of curvature, p' = rho t and p'' = rho' t - rho n, h' = p . t and h'' = rho - h (the
+  /// second at -n: t -> -t); the terms left out (rho' s^2 / 2 and beyond) are at round-off for
+  /// s <= contactExtrapolateStep.
+  KOKKOS_INLINE_FUNCTION void advance(double s) {
+    const double tx = -ny, ty = nx, half = 0.5 * s * s;
+    const auto move = [&](Support& p, double sign) {
+      const double slope = sign * (p.x * tx + p.y * ty);
+      p.h += slope * s + (p.radius - p.h) * half;
+      p.x += sign * p.radius * s * tx - p.radius * half * sign * nx;
+      p.y += sign * p.radius * s * ty - p.radius * half * sign * ny;
+    };
+    move(first, 1.0);
+    move(second, -1.0);
+    const Heading turned = turnedTo(Heading{0.0, nx, ny}, s);
+    nx = turned.x;
+    ny = turned.y;
+  }
 };
 
 /// \brief The Newton step -slope / curvature of a minimisation, or 0 where the curvature gives
@@ -147,6 +207,7 @@ KOKKOS_INLINE_FUNCTION double newtonStep(double slope, double curvature) {
 struct NewtonTarget {
   double phi = 0.0;
   bool converged = false;
+  bool takeWithoutEvaluation = false; ///< short enough to end on (contactExtrapolateStep)
 };
 
 /// \brief The Newton step of a minimisation in the angle from phi (slope g, curvature c).
@@ -155,6 +216,7 @@ KOKKOS_INLINE_FUNCTION NewtonTarget plainNewtonTarget(double phi, double g, doub
   const double step = newtonStep(g, c);
   plain.phi = phi + step;
   plain.converged = step != 0.0 && math::fabs(step) <= contactAngleTolerance;
+  plain.takeWithoutEvaluation = step != 0.0 && math::fabs(step) <= contactExtrapolateStep;
   return plain;
 }
 
@@ -267,38 +329,12 @@ struct DrumObjective {
   }
 };
 
-/// \brief An angle and its unit direction, carried through a search so that its small turns need
-/// no cos and sin (a sincos per evaluation was a tenth of a flowing drum's time).
-struct Heading {
-  double phi = 0.0, x = 1.0, y = 0.0;
-};
-
-/// \brief The heading of the angle phi.
-KOKKOS_INLINE_FUNCTION Heading headingOf(double phi) {
-  return Heading{phi, math::cos(phi), math::sin(phi)};
-}
-
-/// \brief The heading of the vector (x, y) (of angle 0 for the zero vector).
-KOKKOS_INLINE_FUNCTION Heading headingAlong(double x, double y) {
-  if (x == 0.0 && y == 0.0) {
-    return Heading{};
-  }
-  const double length = math::sqrt(x * x + y * y);
-  return Heading{math::atan2(y, x), x / length, y / length};
-}
-
-/// \brief The heading of the angle phi, turned from `from`: for turns d below 1e-2 rad by the
-/// series of cos d and sin d to d^7 (the first term left out is below 3e-21), headingOf(phi)
-/// otherwise.
-KOKKOS_INLINE_FUNCTION Heading turnedTo(const Heading& from, double phi) {
-  const double d = phi - from.phi;
-  if (!(math::fabs(d) < 1e-2)) {
-    return headingOf(phi);
-  }
-  const double d2 = d * d;
-  const double c = 1.0 - d2 * (0.5 - d2 * (1.0 / 24.0 - d2 * (1.0 / 720.0)));
-  const double s = d * (1.0 - d2 * (1.0 / 6.0 - d2 * (1.0 / 120.0 - d2 * (1.0 / 5040.0))));
-  return Heading{phi, c * from.x - s * from.y, s * from.x + c * from.y};
+/// \brief Ends a search at target.phi from `at`, f's last evaluation, without evaluating there
+/// (NewtonTarget::takeWithoutEvaluation): the supports follow the step (LastSupports::advance()).
+template <class Objective>
+KOKKOS_INLINE_FUNCTION Heading takeLastStep(const Objective& f, const Heading& at, double phi) {
+  f.last.advance(phi - at.phi);
+  return Heading{phi, f.last.nx, f.last.ny};
 }
 
 /// \brief Root of f's slope in the bracket [lo, hi] (slope < 0 at lo, > 0 at hi; the scans presume
@@ -318,6 +354,9 @@ KOKKOS_INLINE_FUNCTION Heading refineNewton(const Objective& f, double lo, doubl
     const NewtonTarget target = f.newtonTarget(phi, g, c);
     if (target.converged) {
       break; // the root is closer to phi than that short step
+    }
+    if (target.takeWithoutEvaluation && target.phi > lo && target.phi < hi) {
+      return takeLastStep(f, at, target.phi);
     }
     const double newton = target.phi;
     const double stepNewton = math::fabs(newton - phi);
@@ -441,6 +480,10 @@ KOKKOS_INLINE_FUNCTION WarmStart minimiseFromGuess(const Objective& f, double gu
     const NewtonTarget target = f.newtonTarget(near.phi, gNear, c);
     if (target.converged) {
       return WarmStart::Found; // out: near
+    }
+    if (target.takeWithoutEvaluation && !slow) {
+      out = takeLastStep(f, near, target.phi);
+      return WarmStart::Found;
     }
     double step = math::fabs(target.phi - near.phi);
     if (!(step > 0.0)) {

@@ -341,7 +341,7 @@ TEST(TEST_CATEGORY, superquadric_warm_start_matches_cold_search) {
   std::mt19937_64 gen(41);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int warm = 0, apart = 0;
-  double pointError = 0.0;
+  double pointError = 0.0, normalError = 0.0;
   for (const RandomPair& p : randomPairs(300, 42, true)) {
     ContactGeometry cold;
     const bool hit = superquadricPair(p.A, p.ta, p.B, p.tb, p.dx, p.dy, cold);
@@ -378,12 +378,14 @@ TEST(TEST_CATEGORY, superquadric_warm_start_matches_cold_search) {
         EXPECT_NEAR(g.px, cold.px, 1e-4);
         EXPECT_NEAR(g.py, cold.py, 1e-4);
         pointError = std::max(pointError, std::hypot(g.px - cold.px, g.py - cold.py));
+        normalError = std::max(normalError, std::hypot(g.nx - cold.nx, g.ny - cold.ny));
       }
     }
     ++warm;
   }
-  std::printf("warm start: %d contacts, %d apart, largest contact-point difference %.1e\n", warm,
-              apart, pointError);
+  std::printf("warm start: %d contacts, %d apart, largest contact-point difference %.1e, normal "
+              "difference %.1e\n",
+              warm, apart, pointError, normalError);
   EXPECT_GT(warm, 100);
   EXPECT_GT(apart, 30);
 }
@@ -392,6 +394,7 @@ TEST(TEST_CATEGORY, superquadric_warm_start_matches_cold_search) {
 struct CountingPair {
   detail::PairObjective pair;
   mutable int evaluations = 0;
+  detail::LastSupports& last = pair.last; // the searches' last step moves the supports
   double evaluate(double nx, double ny, double& slope, double& curvature) const {
     ++evaluations;
     return pair.evaluate(nx, ny, slope, curvature);
