@@ -93,7 +93,8 @@ TEST(TEST_CATEGORY, compat_scoped_region_and_version) {
 }
 
 // x^(1/3) and x^(1/5) of n values log-uniform over the normal doubles, in a kernel.
-Kokkos::View<double**, Kokkos::HostSpace> wholeRootsInKernel(int n) {
+// (the host copy keeps the device View's layout: LayoutLeft on CUDA)
+Kokkos::View<double**, TEST_EXECSPACE::array_layout, Kokkos::HostSpace> wholeRootsInKernel(int n) {
   using space = TEST_EXECSPACE;
   Kokkos::View<double**, space::memory_space> out("hikiln::test::roots", n, 3);
   Kokkos::parallel_for(
