@@ -179,8 +179,9 @@ struct LastSupports {
   /// \brief Moves both supports (radii kept by the evaluation) to the direction turned by a
   /// short step s, without roots: a support point moves along the tangent t at the rate of its
   /// radius of curvature, p' = rho t and p'' = rho' t - rho n, h' = p . t and h'' = rho - h (the
-  /// second at -n: t -> -t); the terms left out (rho' s^2 / 2 and beyond) are at round-off for
-  /// s <= contactExtrapolateStep.
+  /// second at -n: t -> -t); the terms left out, rho' s^2 / 2 and beyond, move a point by up to
+  /// 7.5e-9 of the size for s <= contactExtrapolateStep
+  /// (superquadric_warm_start_matches_cold_search).
   KOKKOS_INLINE_FUNCTION void advance(double s) {
     const double tx = -ny, ty = nx, half = 0.5 * s * s;
     const auto move = [&](Support& p, double sign) {
