@@ -46,7 +46,7 @@ KOKKOS_INLINE_FUNCTION bool isCircle(const SuperquadricShape& s) {
 
 /// \brief x^(1/k) for x >= 0, with cheap root forms for the orders blocky shapes need most
 /// (k = 1 to 6 and 8; math::wholeRoot() for the third and fifth roots); pow otherwise.
-KOKKOS_INLINE_FUNCTION double rootOfOrder(double x, double k) {
+KOKKOS_FORCEINLINE_FUNCTION double rootOfOrder(double x, double k) {
   if (k == 1.0) {
     return x;
   }
@@ -135,9 +135,10 @@ KOKKOS_INLINE_FUNCTION void boundaryNormal(const SuperquadricShape& s, double ph
 /// \brief Support of a shape in a body-frame direction (u, v) (unit): h = max over the outline of
 /// p . (u, v) and the point p that attains it.
 struct Support {
-  double h = 0.0;          ///< support value (m)
-  double x = 0.0, y = 0.0; ///< support point (m)
-  double radius = 0.0;     ///< radius of curvature there (m), where asked for (supportPoint())
+  double h = 0.0;           ///< support value (m)
+  double x = 0.0, y = 0.0;  ///< support point (m)
+  double radius = 0.0;      ///< radius of curvature there (m), where asked for (supportPoint())
+  double radiusSlope = 0.0; ///< its slope over the direction's angle (m / rad), where asked for
   /// where the radius is asked for: t = min / max of (a |u|, b |v|) and its root r = t^(1/(N-1))
   /// (detail::UnitSupport), the variable in which the support is smooth next to a face centre
   double t = 0.0, r = 0.0;
@@ -209,26 +210,48 @@ KOKKOS_INLINE_FUNCTION UnitSupport unitSupport(double n, double U, double V) {
   return out;
 }
 
+/// \brief Radius of curvature at a support point and its slope over the direction's angle.
+struct SupportCurvature {
+  double radius = 0.0; ///< rho (m)
+  double slope = 0.0;  ///< d rho / d psi (m / rad); 0 at a face centre
+};
+
 /// \brief Radius of curvature of the outline (semi-axes a, b) at the support point of `unit`,
 /// from its roots: with X, Y the support point over (a, b), the curvature of |x/a|^N + |y/b|^N = 1
 /// is (N - 1) (X Y)^(N-2) / (a^2 b^2 (X^(2N-2) / a^2 + Y^(2N-2) / b^2)^(3/2)), which in the
 /// roots is rho = A^2 B^2 (r / t) w^(3/2) / ((N - 1) g q), w = 1 / A^2 + t^2 / B^2, A the
 /// semi-axis of the bigger component. Infinite at a face centre (t = 0) for N > 2 (returned as
 /// flatRadius), the circle's radius for N = 2, a = b (tstSuperquadricGeometry.hpp checks it
-/// against h + h'').
-KOKKOS_INLINE_FUNCTION double supportRadius(double n, double a, double b, const UnitSupport& unit) {
-  const double A = unit.uBig ? a : b, B = unit.uBig ? b : a;
-  double r = 1.0, t = 1.0; // r / t = t^(1/(N-1) - 1)
-  if (n != 2.0) {
-    if (!(unit.t > 0.0)) {
-      return flatRadius;
-    }
-    r = unit.r;
-    t = unit.t;
+/// against h + h''). Its slope over the direction's angle psi: with W = B^2 + t^2 A^2,
+/// dt / dpsi = +-W / (A B) (tSign: + where t grows with psi) and
+/// d ln rho / dt = -(N - 2) / ((N - 1) t) + 3 t A^2 / W - (N + 1) r / ((N - 1) q).
+KOKKOS_INLINE_FUNCTION SupportCurvature supportCurvature(double n, double a, double b,
+                                                         const UnitSupport& unit, double tSign) {
+  const double A = unit.uBig ? a : b, B = unit.uBig ? b : a, t = unit.t, q = unit.q;
+  // A^2 B^2 w^(3/2) = W^(3/2) / (A B) with W = A^2 B^2 w: one division
+  const double W = B * B + t * t * (A * A);
+  SupportCurvature out;
+  if (n == 2.0) { // r / t = 1, and t may be 0
+    const double inverse = 1.0 / (A * B * q);
+    out.radius = W * math::sqrt(W) * unit.invG * inverse;
+    out.slope = tSign * out.radius * inverse * 3.0 * t * (A * A - B * B);
+    return out;
   }
-  // A^2 B^2 w^(3/2) = W^(3/2) / (A B) with W = A^2 B^2 w = B^2 + t^2 A^2: one division
-  const double W = B * B + unit.t * unit.t * (A * A);
-  return r * W * math::sqrt(W) * unit.invG / (t * A * B * (n - 1.0) * unit.q);
+  if (!(t > 0.0)) {
+    out.radius = flatRadius;
+    return out;
+  }
+  const double inverse = 1.0 / (t * A * B * (n - 1.0) * q); // 1 / (A B) = t (N - 1) q inverse
+  out.radius = unit.r * W * math::sqrt(W) * unit.invG * inverse;
+  out.slope =
+      tSign * out.radius * inverse *
+      (3.0 * t * t * (A * A) * (n - 1.0) * q - (n - 2.0) * W * q - (n + 1.0) * unit.r * W * t);
+  return out;
+}
+
+/// \brief The radius of supportCurvature().
+KOKKOS_INLINE_FUNCTION double supportRadius(double n, double a, double b, const UnitSupport& unit) {
+  return supportCurvature(n, a, b, unit, 1.0).radius;
 }
 
 } // namespace detail
@@ -243,8 +266,9 @@ KOKKOS_INLINE_FUNCTION double supportValue(const SuperquadricShape& s, double u,
 
 /// \brief Support value and point: p = (a sgn(u) (U/h)^(1/(N-1)), b sgn(v) (V/h)^(1/(N-1))), which
 /// lies on the outline and has the outward normal (u, v); from the same two roots as
-/// supportValue(). WithRadius: also the radius of curvature there (detail::supportRadius()), h +
-/// h'' of the support function over the direction's angle.
+/// supportValue(). WithRadius: also the radius of curvature there and its slope
+/// (detail::supportCurvature()), h + h'' and h' + h''' of the support function over the
+/// direction's angle.
 template <bool WithRadius = false>
 KOKKOS_INLINE_FUNCTION Support supportPoint(const SuperquadricShape& s, double u, double v) {
   const detail::UnitSupport unit =
@@ -254,7 +278,11 @@ KOKKOS_INLINE_FUNCTION Support supportPoint(const SuperquadricShape& s, double u
   out.x = s.a * unit.pU * (u < 0.0 ? -1.0 : 1.0);
   out.y = s.b * unit.pV * (v < 0.0 ? -1.0 : 1.0);
   if constexpr (WithRadius) {
-    out.radius = detail::supportRadius(s.n, s.a, s.b, unit);
+    // t grows with the angle where the angle's smaller component grows: (u v >= 0) == uBig
+    const detail::SupportCurvature k =
+        detail::supportCurvature(s.n, s.a, s.b, unit, ((u * v >= 0.0) == unit.uBig) ? 1.0 : -1.0);
+    out.radius = k.radius;
+    out.radiusSlope = k.slope;
     out.t = unit.t;
     out.r = unit.r;
   }

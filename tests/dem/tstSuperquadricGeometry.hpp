@@ -219,6 +219,14 @@ TEST(TEST_CATEGORY, superquadric_support_radius_is_h_plus_h2) {
         const Support p = supportPoint<true>(s, du, dv);
         // the differences' own error is up to 8e-7 here (step 1e-4)
         EXPECT_NEAR(p.radius, fd, 4e-6 * std::max(1.0, fd)) << "N " << n << " psi " << psi;
+        // its slope, by central differences of the radius (the warm search's pen''')
+        const auto radiusAt = [&](double angle) {
+          return supportPoint<true>(s, std::cos(angle), std::sin(angle)).radius;
+        };
+        const double fine = 1e-6; // the differences' error: ~1e-9 of the slope here
+        const double fdSlope = (radiusAt(psi + fine) - radiusAt(psi - fine)) / (2.0 * fine);
+        EXPECT_NEAR(p.radiusSlope, fdSlope, 1e-7 * std::max(1.0, std::fabs(fdSlope)))
+            << "N " << n << " psi " << psi;
         EXPECT_EQ(p.h, supportValue(s, du, dv));
         ++checked;
       }
@@ -450,6 +458,58 @@ TEST(TEST_CATEGORY, superquadric_face_to_face_warm_search_is_short) {
               searches, double(evaluations) / searches, most, angleError);
   EXPECT_LE(evaluations, 5 * searches);
   EXPECT_EQ(searches, 192);
+}
+
+TEST(TEST_CATEGORY, superquadric_short_warm_step_takes_one_evaluation) {
+  // A warm search from a normal one DEM step old: the minimum lies a Newton step of 1e-6 to 1e-5
+  // rad away. Below contactExtrapolateStep that step ends the search after the one evaluation
+  // at the guess, with the third derivative's correction (plainNewtonTarget()), and the supports
+  // follow it to third order (LastSupports::advance()); a second-order step from 1e-5 rad would
+  // leave the normal ~1e-10 rad off. Checked against the cold search of the same placement.
+  std::mt19937_64 gen(41);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  double worstAngle = 0.0, worstPoint = 0.0, worstOverlap = 0.0;
+  for (const double n : {3.0, 4.0}) {
+    const SuperquadricShape A{0.5, 0.5, n}, B{0.45, 0.45, n};
+    const double size = A.a + A.b + B.a + B.b;
+    int searches = 0, evaluations = 0;
+    while (searches < 600) {
+      const double ta = 2.0 * pi * u(gen), tb = 2.0 * pi * u(gen), dir = 2.0 * pi * u(gen);
+      double dist = 1.6;
+      ContactGeometry cold;
+      while (!superquadricPair(A, ta, B, tb, dist * std::cos(dir), dist * std::sin(dir), cold)) {
+        dist *= 0.999; // the first touching distance, then 1e-3 deeper
+      }
+      const double dx = (dist - 1e-3) * std::cos(dir), dy = (dist - 1e-3) * std::sin(dir);
+      ASSERT_TRUE(superquadricPair(A, ta, B, tb, dx, dy, cold));
+      const double ca = std::cos(ta), sa = std::sin(ta), cb = std::cos(tb), sb = std::sin(tb);
+      for (const double turn : {3e-6, -1e-5, 2e-5}) {
+        CountingPair f{{A, B, ca, sa, cb, sb, dx, dy, {}}};
+        detail::Heading normal;
+        ASSERT_EQ(detail::minimiseFromGuess(f, cold.angle + turn, size, normal),
+                  detail::WarmStart::Found);
+        ContactGeometry warm;
+        ASSERT_TRUE(
+            superquadricPair(A, ta, B, tb, dx, dy, warm, PairGuess::Normal, cold.angle + turn));
+        EXPECT_NEAR(warm.angle, normal.phi, 1e-15);
+        worstAngle = std::max(worstAngle, std::fabs(warm.angle - cold.angle));
+        worstPoint = std::max(worstPoint, std::hypot(warm.px - cold.px, warm.py - cold.py) / size);
+        worstOverlap = std::max(worstOverlap, std::fabs(warm.overlap - cold.overlap) / size);
+        evaluations += f.evaluations;
+        ++searches;
+      }
+    }
+    const double perSearch = double(evaluations) / searches;
+    std::printf("N %g: short warm searches %d, %.3f evaluations each\n", n, searches, perSearch);
+    // flat faces' minima step in the support's root and evaluate again
+    EXPECT_LE(perSearch, 1.5) << "N " << n;
+  }
+  std::printf("short warm searches against the cold search: angle %.1e rad, contact point %.1e, "
+              "overlap %.1e of the size\n",
+              worstAngle, worstPoint, worstOverlap);
+  EXPECT_LE(worstAngle, 1e-10);
+  EXPECT_LE(worstPoint, 1e-6);
+  EXPECT_LE(worstOverlap, 1e-13);
 }
 
 TEST(TEST_CATEGORY, superquadric_pair_rotation_invariant_and_symmetric) {
