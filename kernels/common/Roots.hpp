@@ -17,7 +17,7 @@ namespace detail {
 
 /// \brief The degree-9 polynomial with coefficients c[0..9] at s, by Estrin's scheme (short
 /// dependency chains: the roots sit on the narrow phase's critical path).
-KOKKOS_INLINE_FUNCTION double polynomial9(const double* c, double s) {
+KOKKOS_FORCEINLINE_FUNCTION double polynomial9(const double* c, double s) {
   const double s2 = s * s, s4 = s2 * s2;
   return (c[0] + c[1] * s + (c[2] + c[3] * s) * s2) +
          (c[4] + c[5] * s + (c[6] + c[7] * s) * s2) * s4 + (c[8] + c[9] * s) * s4 * s4;
@@ -88,7 +88,7 @@ template <int K> inline double wholeRootOnHost(double x) {
 
 /// \brief x^(1/K) for x >= 0, K = 3 or 5: the library's cbrt or pow on devices, and for zero,
 /// subnormal, infinite or NaN x; detail::wholeRootOnHost() otherwise.
-template <int K> KOKKOS_INLINE_FUNCTION double wholeRoot(double x) {
+template <int K> KOKKOS_FORCEINLINE_FUNCTION double wholeRoot(double x) {
   static_assert(K == 3 || K == 5, "wholeRoot: K = 3 or 5");
 #if defined(__CUDA_ARCH__) || defined(__HIP_DEVICE_COMPILE__)
   return K == 3 ? math::cbrt(x) : math::pow(x, 0.2);
