@@ -64,7 +64,7 @@ template <> inline double twoToThe<5>(int r) {
 /// e = K q + r, so x^(1/K) = m^(1/K) 2^(r/K) 2^q. m^(1/K) is RootFit's y, corrected by one Newton
 /// step for y^K = m with the fitted inverse slope, y + (m - y^K) m^(-(K-1)/K) / K, which squares
 /// y's error: 2.3 ulp at most (tests/common/tstCompat.hpp checks 3), with no division.
-template <int K> inline double wholeRootOnHost(double x) {
+template <int K> [[gnu::always_inline]] inline double wholeRootOnHost(double x) {
   std::uint64_t bits = 0;
   std::memcpy(&bits, &x, sizeof bits);
   const int e = static_cast<int>(bits >> 52) - 1023;

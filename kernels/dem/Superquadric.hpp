@@ -164,7 +164,7 @@ struct UnitSupport {
 /// a degree-9 fit in Chebyshev nodes in powers of s = q - 3/2 (2.3e-9 relative at most), then one
 /// Newton step for z^-N = q, z <- z + z (1 - q z^N) / N, which squares that error: within 3 ulp,
 /// with no root and no division. 1 / rootOfOrder() for other N.
-KOKKOS_INLINE_FUNCTION double inverseRootOnOneTwo(double n, double q) {
+KOKKOS_FORCEINLINE_FUNCTION double inverseRootOnOneTwo(double n, double q) {
   constexpr double fit3[10] = {0.8735804677870591,    -0.19412900292839008,  0.08627894871788673,
                                -0.044736694704773414, 0.024873179733175023,  -0.014378917188588315,
                                0.008302882754196902,  -0.004966772415384195, 0.00403162490376082,
@@ -188,7 +188,7 @@ KOKKOS_INLINE_FUNCTION double inverseRootOnOneTwo(double n, double q) {
   return z + z * (1.0 - q * zN) * invN;
 }
 
-KOKKOS_INLINE_FUNCTION UnitSupport unitSupport(double n, double U, double V) {
+KOKKOS_FORCEINLINE_FUNCTION UnitSupport unitSupport(double n, double U, double V) {
   UnitSupport out;
   const bool uBig = U >= V;
   const double big = uBig ? U : V;
