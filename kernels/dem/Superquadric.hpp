@@ -146,7 +146,7 @@ struct Support {
 
 namespace detail {
 
-/// \brief The radius of curvature supportRadius() gives a flat face's centre (m).
+/// \brief The radius of curvature supportCurvature() gives a flat face's centre (m).
 inline constexpr double flatRadius = 1e300;
 
 /// \brief The support of the N-norm ball in the direction (U, V) >= 0 (not both 0) in two roots:
@@ -247,11 +247,6 @@ KOKKOS_INLINE_FUNCTION SupportCurvature supportCurvature(double n, double a, dou
       tSign * out.radius * inverse *
       (3.0 * t * t * (A * A) * (n - 1.0) * q - (n - 2.0) * W * q - (n + 1.0) * unit.r * W * t);
   return out;
-}
-
-/// \brief The radius of supportCurvature().
-KOKKOS_INLINE_FUNCTION double supportRadius(double n, double a, double b, const UnitSupport& unit) {
-  return supportCurvature(n, a, b, unit, 1.0).radius;
 }
 
 } // namespace detail

@@ -193,8 +193,7 @@ struct LastSupports {
       const double along = sign * (rho * s + slope * s2 - rho * s3);
       const double inward = sign * (rho * s2 + 2.0 * slope * s3);
       p.x += along * tx - inward * nx;
-      p.y += along * ty - inward * ny;
-      p.radius += slope * s;
+      p.y += along * ty - inward * ny; // the radii stay the evaluation's: nothing reads them after
     };
     move(first, 1.0);
     move(second, -1.0);
