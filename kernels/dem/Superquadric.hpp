@@ -139,7 +139,7 @@ struct Support {
   double x = 0.0, y = 0.0;  ///< support point (m)
   double radius = 0.0;      ///< radius of curvature there (m), where asked for (supportPoint())
   double radiusSlope = 0.0; ///< its slope over the direction's angle (m / rad), where asked for
-  /// where the radius is asked for: t = min / max of (a |u|, b |v|) and its root r = t^(1/(N-1))
+  /// t = min / max of (a |u|, b |v|) and its root r = t^(1/(N-1))
   /// (detail::UnitSupport), the variable in which the support is smooth next to a face centre
   double t = 0.0, r = 0.0;
 };
@@ -188,15 +188,10 @@ KOKKOS_FORCEINLINE_FUNCTION double inverseRootOnOneTwo(double n, double q) {
   return z + z * (1.0 - q * zN) * invN;
 }
 
-KOKKOS_FORCEINLINE_FUNCTION UnitSupport unitSupport(double n, double U, double V) {
+/// \brief unitSupport() from its first root r = t^(1/(N-1)) (big = max(U, V), t = min / max).
+KOKKOS_FORCEINLINE_FUNCTION UnitSupport unitSupportOfRoot(double n, double big, double t, double r,
+                                                          bool uBig) {
   UnitSupport out;
-  const bool uBig = U >= V;
-  const double big = uBig ? U : V;
-  if (!(big > 0.0)) {
-    return out;
-  }
-  const double t = (uBig ? V : U) / big;
-  const double r = rootOfOrder(t, n - 1.0);
   const double q = 1.0 + t * r;
   const double invG = inverseRootOnOneTwo(n, q);
   out.h = big * q * invG;
@@ -208,6 +203,17 @@ KOKKOS_FORCEINLINE_FUNCTION UnitSupport unitSupport(double n, double U, double V
   out.invG = invG;
   out.uBig = uBig;
   return out;
+}
+
+/// \brief The N-norm ball's support in the direction (U, V) >= 0, not both 0 (UnitSupport).
+KOKKOS_FORCEINLINE_FUNCTION UnitSupport unitSupport(double n, double U, double V) {
+  const bool uBig = U >= V;
+  const double big = uBig ? U : V;
+  if (!(big > 0.0)) {
+    return UnitSupport{};
+  }
+  const double t = (uBig ? V : U) / big;
+  return unitSupportOfRoot(n, big, t, rootOfOrder(t, n - 1.0), uBig);
 }
 
 /// \brief Radius of curvature at a support point and its slope over the direction's angle.
@@ -249,6 +255,19 @@ KOKKOS_INLINE_FUNCTION SupportCurvature supportCurvature(double n, double a, dou
   return out;
 }
 
+/// \brief The support value and point (no radius) of `unit`, found for the body-frame direction
+/// (u, v) of shape s.
+KOKKOS_FORCEINLINE_FUNCTION Support supportOfUnit(const SuperquadricShape& s,
+                                                  const UnitSupport& unit, double u, double v) {
+  Support out;
+  out.h = unit.h;
+  out.x = s.a * unit.pU * (u < 0.0 ? -1.0 : 1.0);
+  out.y = s.b * unit.pV * (v < 0.0 ? -1.0 : 1.0);
+  out.t = unit.t;
+  out.r = unit.r;
+  return out;
+}
+
 } // namespace detail
 
 /// \brief Support value only: h = (|a u|^M + |b v|^M)^(1/M), M = N/(N-1), written as
@@ -268,20 +287,29 @@ template <bool WithRadius = false>
 KOKKOS_INLINE_FUNCTION Support supportPoint(const SuperquadricShape& s, double u, double v) {
   const detail::UnitSupport unit =
       detail::unitSupport(s.n, s.a * math::fabs(u), s.b * math::fabs(v));
-  Support out;
-  out.h = unit.h;
-  out.x = s.a * unit.pU * (u < 0.0 ? -1.0 : 1.0);
-  out.y = s.b * unit.pV * (v < 0.0 ? -1.0 : 1.0);
+  Support out = detail::supportOfUnit(s, unit, u, v);
   if constexpr (WithRadius) {
     // t grows with the angle where the angle's smaller component grows: (u v >= 0) == uBig
     const detail::SupportCurvature k =
         detail::supportCurvature(s.n, s.a, s.b, unit, ((u * v >= 0.0) == unit.uBig) ? 1.0 : -1.0);
     out.radius = k.radius;
     out.radiusSlope = k.slope;
-    out.t = unit.t;
-    out.r = unit.r;
   }
   return out;
+}
+
+/// \brief The support point (value and point, no radius) in the body-frame direction (u, v)
+/// whose root r = t^(1/(N-1)) (Support::r) is given instead of taken: next to a face centre the
+/// point moves with r, not with the angle, and a search that steps in r (faceNewtonTarget() in
+/// SuperquadricContact.hpp) ends on the point of its step's r. No root but the second
+/// (detail::inverseRootOnOneTwo()); (u, v) gives the face and the signs.
+KOKKOS_INLINE_FUNCTION Support supportAtRoot(const SuperquadricShape& s, double u, double v,
+                                             double r) {
+  const double U = s.a * math::fabs(u), V = s.b * math::fabs(v);
+  const bool uBig = U >= V;
+  const detail::UnitSupport unit =
+      detail::unitSupportOfRoot(s.n, uBig ? U : V, powerOfOrder(r, s.n - 1.0), r, uBig);
+  return detail::supportOfUnit(s, unit, u, v);
 }
 
 /// \brief An upper bound of supportValue() without roots, for separating-axis tests. With

@@ -39,7 +39,9 @@
 /// they overshoot, and the scan when no sign change lies within 0.5 rad. A Newton step in the
 /// angle below contactExtrapolateStep is the last: it is taken without evaluating the supports
 /// again, which follow it to third order (LastSupports::advance()), so a search from a normal a
-/// step old takes one or two evaluations (docs/blocky-particles.md). A warm-started search
+/// step old takes one or two evaluations (docs/blocky-particles.md); so does a step in a flat
+/// support's root below contactFaceExtrapolateStep, which ends on that root's point
+/// (PairObjective::endAt()). A warm-started search
 /// follows its basin of pen continuously; the cold scan takes the deepest sampled one. The
 /// searches carry each angle with its direction (detail::Heading) and turn the direction by the
 /// series of cos and sin for steps below 1e-2 rad, so most of their steps take no sincos.
@@ -84,6 +86,11 @@ inline constexpr double contactRootTolerance = 1e-10;
 /// ~1e-11 rad. A warm search from the last DEM step's normal mostly turns by 1e-6 to 1e-4 rad,
 /// so many end after the one evaluation at the guess (docs/blocky-particles.md).
 inline constexpr double contactExtrapolateStep = 3e-5;
+/// \brief The same next to a face centre, for a Newton step in the support's root
+/// (faceNewtonTarget()) this short: the step is taken, the flat support's point is the one of
+/// the step's root (supportAtRoot()), the other support follows the angle to third order, or,
+/// when flat too, is evaluated there.
+inline constexpr double contactFaceExtrapolateStep = 1e-5;
 
 /// \brief Result of a narrow-phase test.
 struct ContactGeometry {
@@ -104,16 +111,26 @@ KOKKOS_INLINE_FUNCTION BodyAxis bodyAxis(double theta) {
   return BodyAxis{math::cos(theta), math::sin(theta)};
 }
 
+/// \brief A support in body axes turned to world axes (orientation (c, sn)).
+KOKKOS_INLINE_FUNCTION Support toWorld(Support w, double c, double sn) {
+  const double bx = w.x;
+  w.x = c * bx - sn * w.y;
+  w.y = sn * bx + c * w.y;
+  return w;
+}
+
 /// \brief Support of a shape with orientation (cos, sin) in the world direction (nx, ny); the
 /// point is relative to the shape's centre, in world axes (WithRadius: supportPoint()).
 template <bool WithRadius = false>
 KOKKOS_INLINE_FUNCTION Support worldSupport(const SuperquadricShape& s, double c, double sn,
                                             double nx, double ny) {
-  Support w = supportPoint<WithRadius>(s, c * nx + sn * ny, -sn * nx + c * ny);
-  const double bx = w.x;
-  w.x = c * bx - sn * w.y;
-  w.y = sn * bx + c * w.y;
-  return w;
+  return toWorld(supportPoint<WithRadius>(s, c * nx + sn * ny, -sn * nx + c * ny), c, sn);
+}
+
+/// \brief supportAtRoot() in the world direction (nx, ny).
+KOKKOS_INLINE_FUNCTION Support worldSupportAtRoot(const SuperquadricShape& s, double c, double sn,
+                                                  double nx, double ny, double r) {
+  return toWorld(supportAtRoot(s, c * nx + sn * ny, -sn * nx + c * ny, r), c, sn);
 }
 
 /// \brief Support value only, in the world direction (nx, ny).
@@ -185,18 +202,23 @@ struct LastSupports {
   /// ended this way put the contact point within 7.3e-11 of the size of the cold search's
   /// (superquadric_short_warm_step_takes_one_evaluation).
   KOKKOS_INLINE_FUNCTION void advance(double s) {
+    follow(first, 1.0, s);
+    follow(second, -1.0, s);
+    turn(s);
+  }
+  /// \brief Moves one support (the first, sign 1, or the second, -1) by the turn s, as advance().
+  KOKKOS_INLINE_FUNCTION void follow(Support& p, double sign, double s) const {
     const double tx = -ny, ty = nx, s2 = 0.5 * s * s, s3 = s * s * s / 6.0;
-    const auto move = [&](Support& p, double sign) {
-      const double rho = p.radius, slope = p.radiusSlope;
-      const double rate = sign * (p.x * tx + p.y * ty); // h'
-      p.h += rate * s + (rho - p.h) * s2 + (slope - rate) * s3;
-      const double along = sign * (rho * s + slope * s2 - rho * s3);
-      const double inward = sign * (rho * s2 + 2.0 * slope * s3);
-      p.x += along * tx - inward * nx;
-      p.y += along * ty - inward * ny; // the radii stay the evaluation's: nothing reads them after
-    };
-    move(first, 1.0);
-    move(second, -1.0);
+    const double rho = p.radius, slope = p.radiusSlope;
+    const double rate = sign * (p.x * tx + p.y * ty); // h'
+    p.h += rate * s + (rho - p.h) * s2 + (slope - rate) * s3;
+    const double along = sign * (rho * s + slope * s2 - rho * s3);
+    const double inward = sign * (rho * s2 + 2.0 * slope * s3);
+    p.x += along * tx - inward * nx;
+    p.y += along * ty - inward * ny; // the radii stay the evaluation's: nothing reads them after
+  }
+  /// \brief Turns the direction by s (after the supports followed it).
+  KOKKOS_INLINE_FUNCTION void turn(double s) {
     const Heading turned = turnedTo(Heading{0.0, nx, ny}, s);
     nx = turned.x;
     ny = turned.y;
@@ -209,11 +231,31 @@ KOKKOS_INLINE_FUNCTION double newtonStep(double slope, double curvature) {
   return curvature > 0.0 && curvature < 1e-3 * flatRadius ? -slope / curvature : 0.0;
 }
 
+/// \brief atan z, for |z| below 1e-2 by its series to z^9 (the first term left out is below
+/// 1e-20 of z), math::atan otherwise: the steps in a face's root turn the normal by little, and
+/// the library's atan was 2.3 % of a drum of N = 6 blocks.
+KOKKOS_INLINE_FUNCTION double atanOfSmall(double z) {
+  if (!(math::fabs(z) < 1e-2)) {
+    return math::atan(z);
+  }
+  const double z2 = z * z;
+  return z * (1.0 - z2 * (1.0 / 3.0 - z2 * (1.0 / 5.0 - z2 * (1.0 / 7.0 - z2 * (1.0 / 9.0)))));
+}
+
+/// \brief Whether the outline of s is near-flat at its support p: a radius of curvature above 4
+/// of its semi-axes (a face centre's is flatRadius).
+KOKKOS_INLINE_FUNCTION bool nearlyFlat(const SuperquadricShape& s, const Support& p) {
+  return p.radius > 4.0 * (s.a + s.b);
+}
+
 /// \brief Where a Newton step lands, and whether it was short enough to stop after it.
 struct NewtonTarget {
   double phi = 0.0;
   bool converged = false;
   bool takeWithoutEvaluation = false; ///< short enough to end on (contactExtrapolateStep)
+  bool alongFace = false;  ///< the step was in a flat support's root (faceNewtonTarget())
+  bool faceOfFirst = true; ///< that support: the objective's first (else its second)
+  double root = 0.0;       ///< alongFace: that support's root after the step
 };
 
 /// \brief The Newton step of a minimisation in the angle from phi (slope g, curvature c). A
@@ -239,7 +281,9 @@ KOKKOS_INLINE_FUNCTION NewtonTarget plainNewtonTarget(double phi, double g, doub
 /// support is smooth in its root r = t^(1/(N-1)) (Superquadric.hpp), so the step is taken in
 /// y = sgn(x) r, with tan x = sgn(x) (A / B) t (A the semi-axis along the face normal): one step
 /// lands on the root of a slope linear in y, and the step in y, which moves the contact point,
-/// decides convergence (contactRootTolerance; or a step in phi at round-off). Plain Newton in
+/// decides convergence (contactRootTolerance; or a step in phi at round-off); a step in y below
+/// contactFaceExtrapolateStep is the last (its error, of order its square, is ~1e-10 in y: the
+/// contact point moves ~1e-10 of the size). Plain Newton in
 /// phi (contactAngleTolerance) for an ellipse (no faces) and where the outline is not flat
 /// (radius below 4 of its semi-axes).
 KOKKOS_INLINE_FUNCTION NewtonTarget faceNewtonTarget(const SuperquadricShape& s, double cs,
@@ -247,8 +291,7 @@ KOKKOS_INLINE_FUNCTION NewtonTarget faceNewtonTarget(const SuperquadricShape& s,
                                                      double ny, double phi, double g, double c,
                                                      double c3) {
   const NewtonTarget plain = plainNewtonTarget(phi, g, c, c3);
-  if (s.n == 2.0 || !(p.radius > 4.0 * (s.a + s.b)) || !(p.radius < 1e-3 * flatRadius) ||
-      !(p.t > 0.0)) {
+  if (s.n == 2.0 || !nearlyFlat(s, p) || !(p.radius < 1e-3 * flatRadius) || !(p.t > 0.0)) {
     return plain;
   }
   const double u = cs * nx + ss * ny, v = -ss * nx + cs * ny; // the direction in the body frame
@@ -269,10 +312,13 @@ KOKKOS_INLINE_FUNCTION NewtonTarget faceNewtonTarget(const SuperquadricShape& s,
     return plain;
   }
   NewtonTarget face;
-  const double stepInPhi = math::atan((tanNew - tanX) / cosine);
+  const double stepInPhi = atanOfSmall((tanNew - tanX) / cosine);
   face.phi = phi + stepInPhi;
   face.converged = math::fabs(stepInY) <= contactRootTolerance ||
                    math::fabs(stepInPhi) <= 4.0 * DBL_EPSILON * (1.0 + math::fabs(phi));
+  face.takeWithoutEvaluation = math::fabs(stepInY) <= contactFaceExtrapolateStep;
+  face.alongFace = true;
+  face.root = math::fabs(y);
   return face;
 }
 
@@ -309,9 +355,40 @@ struct PairObjective {
   /// rho_A' + rho_B' - pen'.
   KOKKOS_INLINE_FUNCTION NewtonTarget newtonTarget(double phi, double g, double c) const {
     const double c3 = last.first.radiusSlope + last.second.radiusSlope - g;
-    return last.first.radius >= last.second.radius
-               ? faceNewtonTarget(A, ca, sa, last.first, last.nx, last.ny, phi, g, c, c3)
-               : faceNewtonTarget(B, cb, sb, last.second, last.nx, last.ny, phi, g, c, c3);
+    const bool firstFlatter = last.first.radius >= last.second.radius;
+    NewtonTarget target =
+        firstFlatter ? faceNewtonTarget(A, ca, sa, last.first, last.nx, last.ny, phi, g, c, c3)
+                     : faceNewtonTarget(B, cb, sb, last.second, last.nx, last.ny, phi, g, c, c3);
+    target.faceOfFirst = firstFlatter;
+    return target;
+  }
+  /// \brief Ends a search on target (takeWithoutEvaluation) from the last evaluation at `at`: a
+  /// step in the angle moves both supports to third order (LastSupports::advance()); a step in a
+  /// flat support's root (faceNewtonTarget()) takes that support's point of the root
+  /// (worldSupportAtRoot()) and moves the other to third order, or evaluates it where it is flat
+  /// too (it slides fast with the angle then; a face against a face).
+  KOKKOS_INLINE_FUNCTION void endAt(const Heading& at, const NewtonTarget& target) const {
+    const double s = target.phi - at.phi;
+    if (!target.alongFace) {
+      last.advance(s);
+      return;
+    }
+    const bool first = target.faceOfFirst;
+    Support& other = first ? last.second : last.first;
+    const bool otherFlat = nearlyFlat(first ? B : A, other);
+    if (!otherFlat) {
+      last.follow(other, first ? -1.0 : 1.0, s);
+    }
+    last.turn(s);
+    const double nx = last.nx, ny = last.ny;
+    if (first) {
+      last.first = worldSupportAtRoot(A, ca, sa, nx, ny, target.root);
+    } else {
+      last.second = worldSupportAtRoot(B, cb, sb, -nx, -ny, target.root);
+    }
+    if (otherFlat) {
+      other = first ? worldSupport(B, cb, sb, -nx, -ny) : worldSupport(A, ca, sa, nx, ny);
+    }
   }
 };
 
@@ -341,14 +418,19 @@ struct DrumObjective {
   KOKKOS_INLINE_FUNCTION NewtonTarget newtonTarget(double phi, double g, double curv) const {
     return plainNewtonTarget(phi, g, curv, -g - last.first.radiusSlope);
   }
+  /// \brief Ends a search on target from the last evaluation at `at` (LastSupports::advance()).
+  KOKKOS_INLINE_FUNCTION void endAt(const Heading& at, const NewtonTarget& target) const {
+    last.advance(target.phi - at.phi);
+  }
 };
 
 /// \brief Ends a search at target.phi from `at`, f's last evaluation, without evaluating there
-/// (NewtonTarget::takeWithoutEvaluation): the supports follow the step (LastSupports::advance()).
+/// (NewtonTarget::takeWithoutEvaluation): the supports follow the step (f.endAt()).
 template <class Objective>
-KOKKOS_INLINE_FUNCTION Heading takeLastStep(const Objective& f, const Heading& at, double phi) {
-  f.last.advance(phi - at.phi);
-  return Heading{phi, f.last.nx, f.last.ny};
+KOKKOS_INLINE_FUNCTION Heading takeLastStep(const Objective& f, const Heading& at,
+                                            const NewtonTarget& target) {
+  f.endAt(at, target);
+  return Heading{target.phi, f.last.nx, f.last.ny};
 }
 
 /// \brief Root of f's slope in the bracket [lo, hi] (slope < 0 at lo, > 0 at hi; the scans presume
@@ -370,7 +452,7 @@ KOKKOS_INLINE_FUNCTION Heading refineNewton(const Objective& f, double lo, doubl
       break; // the root is closer to phi than that short step
     }
     if (target.takeWithoutEvaluation && target.phi > lo && target.phi < hi) {
-      return takeLastStep(f, at, target.phi);
+      return takeLastStep(f, at, target);
     }
     const double newton = target.phi;
     const double stepNewton = math::fabs(newton - phi);
@@ -496,7 +578,7 @@ KOKKOS_INLINE_FUNCTION WarmStart minimiseFromGuess(const Objective& f, double gu
       return WarmStart::Found; // out: near
     }
     if (target.takeWithoutEvaluation && !slow) {
-      out = takeLastStep(f, near, target.phi);
+      out = takeLastStep(f, near, target);
       return WarmStart::Found;
     }
     double step = math::fabs(target.phi - near.phi);
