@@ -159,9 +159,12 @@ template <class MemorySpace> struct BlockyContacts {
     const double aby = x(b, 1) - x(a, 1);
     const PairGuess guessKind =
         stored > 0.0 ? PairGuess::Normal : (stored < 0.0 ? PairGuess::Axis : PairGuess::None);
+    const double guess = guessKind == PairGuess::Normal
+                             ? spunNormalGuess(decodeAngle(stored), w(a), w(b), s.dt)
+                             : decodeAngle(stored);
     const bool touching =
         blockyPairContact(shape(a), axisOf(a), shape(b), axisOf(b), abx, aby, v(b, 0) - v(a, 0),
-                          v(b, 1) - v(a, 1), w(a), w(b), pc, guessKind, decodeAngle(stored));
+                          v(b, 1) - v(a, 1), w(a), w(b), pc, guessKind, guess);
     angle = pc.axis ? encodeAngle(pc.angle, touching) : 0.0;
     if (!touching) {
       return false;

@@ -32,7 +32,8 @@
 /// (a superquadric with N >= 2 lies inside its a x b rectangle): no contact; a guess, the pair's
 /// last separating axis or last contact normal, which the force kernel keeps per neighbour slot:
 /// pen(guess) <= 0 is still a separating axis (no contact; the root-free bound first, then one
-/// support evaluation per shape); a last normal with pen > 0 starts a local search: safeguarded
+/// support evaluation per shape); a last normal (the force kernel turns it by the pair's mean
+/// spin over the step: spunNormalGuess()) with pen > 0 starts a local search: safeguarded
 /// Newton steps on pen' = 0 with the exact pen'' = rho_A + rho_B - pen (rho the radii of
 /// curvature at the support points, from the same roots), taken in the support's root next to a
 /// face centre, where the slope behaves like |x|^(1/(N-1)) (faceNewtonTarget()), bisection where
@@ -616,6 +617,15 @@ KOKKOS_INLINE_FUNCTION WarmStart minimiseFromGuess(const Objective& f, double gu
 /// \brief What the angle handed to superquadricPair() is: nothing, the pair's last contact normal,
 /// or its last separating axis.
 enum class PairGuess { None, Normal, Axis };
+
+/// \brief The warm search's guess for a pair whose last normal had the angle phi, a step dt ago:
+/// that normal turned by the pair's mean spin over the step. A corner on a face keeps the face's
+/// normal, which turns with the face's body, and in a flowing bed touching blocks mostly turn
+/// alike; with the guess turned, the warm searches of the 2 m drum took 1.48 evaluations each
+/// instead of 1.90 (N = 6; 1.30 instead of 1.53 at N = 4; docs/blocky-particles.md).
+KOKKOS_INLINE_FUNCTION double spunNormalGuess(double phi, double spinA, double spinB, double dt) {
+  return phi + 0.5 * (spinA + spinB) * dt;
+}
 
 /// \brief True when the a x b bounding rectangles of two shapes (orientations (ca, sa), (cb, sb),
 /// d = x_B - x_A) are apart along one of their four axes. A superquadric with N >= 2 lies inside

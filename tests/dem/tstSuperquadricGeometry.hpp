@@ -528,6 +528,50 @@ TEST(TEST_CATEGORY, superquadric_short_warm_step_takes_one_evaluation) {
   EXPECT_LE(warm.overlap, 1e-13);
 }
 
+TEST(TEST_CATEGORY, superquadric_spun_guess_follows_a_turning_pair) {
+  // A touching pair turned as one body by the spin w over a step dt (both orientations and the
+  // centres' offset): its normal turns by w dt. The warm search from spunNormalGuess() of the
+  // last normal ends after the one evaluation at the guess; from the last normal itself, a turn
+  // of 1e-4 rad and more needs a second.
+  std::mt19937_64 gen(23);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double dt = 2e-5;
+  for (const double n : {4.0, 6.0}) {
+    const SuperquadricShape A{0.5, 0.5, n}, B{0.45, 0.45, n};
+    WarmAgainstCold spun, still;
+    while (spun.searches < 300) {
+      const double ta = 2.0 * pi * u(gen), tb = 2.0 * pi * u(gen), dir = 2.0 * pi * u(gen);
+      double dist = 1.6;
+      ContactGeometry last;
+      while (!superquadricPair(A, ta, B, tb, dist * std::cos(dir), dist * std::sin(dir), last)) {
+        dist *= 0.999;
+      }
+      dist -= 1e-3;
+      ASSERT_TRUE(superquadricPair(A, ta, B, tb, dist * std::cos(dir), dist * std::sin(dir), last));
+      for (const double spin : {5.0, -15.0}) { // rad/s: turns of 1e-4 and -3e-4 rad
+        const double turn = spin * dt, d = dir + turn;
+        const double dx = dist * std::cos(d), dy = dist * std::sin(d);
+        ContactGeometry cold;
+        ASSERT_TRUE(superquadricPair(A, ta + turn, B, tb + turn, dx, dy, cold));
+        EXPECT_NEAR(std::remainder(cold.angle - last.angle - turn, 2.0 * pi), 0.0, 1e-9);
+        const double guess = spunNormalGuess(last.angle, spin, spin, dt);
+        spun.search(A, ta + turn, B, tb + turn, dx, dy, cold, guess - cold.angle);
+        still.search(A, ta + turn, B, tb + turn, dx, dy, cold, last.angle - cold.angle);
+      }
+    }
+    std::printf("N %g: a pair turned by 1e-4 and -3e-4 rad, warm searches from the spun guess "
+                "%.3f evaluations each, from the last normal %.3f; against the cold search %.1e "
+                "rad, %.1e of the size in the point\n",
+                n, double(spun.evaluations) / spun.searches,
+                double(still.evaluations) / still.searches, spun.angle, spun.point);
+    EXPECT_LE(spun.evaluations, 1.05 * spun.searches) << "N " << n;
+    EXPECT_GE(still.evaluations, 1.5 * still.searches) << "N " << n;
+    EXPECT_LE(spun.angle, 1e-10) << "N " << n;
+    // faces nearly parallel: the point slides as |dphi|^(1/(N-1)) (as in the warm-start test)
+    EXPECT_LE(spun.point, 1e-4) << "N " << n;
+  }
+}
+
 TEST(TEST_CATEGORY, superquadric_support_at_its_root_is_the_support) {
   // supportAtRoot() with the root of supportPoint() gives supportPoint()'s value and point, also
   // next to face centres (directions 1e-12 to 1e-2 rad from a face normal)
