@@ -472,7 +472,10 @@ using BlockyPairOutcomes = Kokkos::View<detail::PairOutcome**, MemorySpace>;
 
 /// \brief Forces and torques of blocky particles [0, n) into p.force / p.torque; `outcomes` is
 /// reallocated when it does not match the list's shape. circlesOnly (every shape a circle): the
-/// pair pass has nothing to do and is skipped.
+/// disc engine's kernel, computeForces(), which gives bitwise the same forces, torques and
+/// histories as this kernel's circle branch (tstBlockyForcePasses.hpp) at the disc engine's
+/// cost (this kernel's per-slot shape and direction bookkeeping made an all-circle drum about
+/// twice as slow).
 template <class ExecutionSpace, class MemorySpace>
 void computeBlockyForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
                          BlockyArrays<MemorySpace> const& blocky,
@@ -481,8 +484,12 @@ void computeBlockyForces(ExecutionSpace const& space, ParticleArrays<MemorySpace
                          BlockyPairOutcomes<MemorySpace>& outcomes, bool circlesOnly = false) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::dem::computeBlockyForces: particle memory not accessible");
-  if (!circlesOnly && (outcomes.extent(0) != list.rows() ||
-                       outcomes.extent(1) != static_cast<std::size_t>(list.capacity()))) {
+  if (circlesOnly) {
+    computeForces(space, p, list, walls, settings);
+    return;
+  }
+  if (outcomes.extent(0) != list.rows() ||
+      outcomes.extent(1) != static_cast<std::size_t>(list.capacity())) {
     outcomes = BlockyPairOutcomes<MemorySpace>(
         Kokkos::view_alloc(space, std::string("hikiln::dem::pairOutcomes")), // zero: not evaluated
         list.rows(), list.capacity());
@@ -491,10 +498,8 @@ void computeBlockyForces(ExecutionSpace const& space, ParticleArrays<MemorySpace
   const auto policy =
       Kokkos::RangePolicy<ExecutionSpace, Kokkos::Schedule<Kokkos::Dynamic>>(space, 0, p.count())
           .set_chunk_size(detail::forceChunk);
-  if (!circlesOnly) {
-    Kokkos::parallel_for("hikiln::dem::blockyPairs", policy,
-                         detail::BlockyPairFunctor<MemorySpace>{contacts, outcomes});
-  }
+  Kokkos::parallel_for("hikiln::dem::blockyPairs", policy,
+                       detail::BlockyPairFunctor<MemorySpace>{contacts, outcomes});
   Kokkos::parallel_for(
       "hikiln::dem::computeBlockyForces", policy,
       detail::BlockyForceFunctor<MemorySpace>{contacts, outcomes, p.force, p.torque});

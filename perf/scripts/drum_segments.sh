@@ -12,6 +12,8 @@
 # 0.3 s more (blocky) or 1.0 s more (circles, discs) on core 0 (taskset), one at a time. Prints
 # each segment's particle_steps_per_s and, per entry, the median rate and the median of its
 # per-turn ratio to the first entry's rate (first / entry: a cost when the first is the faster).
+# SEGMENT_THREADS=2 runs every segment on two threads pinned to cores 0 and 1 instead (the
+# checkpoints are the same).
 set -euo pipefail
 reps=$1; shift
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -20,12 +22,14 @@ mkdir -p "$dir"
 sets=(--set time.settle=0.5 --set time.spin_up=0.2 --set output.snapshot_interval=0.5
       --set output.checkpoint_interval=1 --set output.average_interval=0.5)
 first_binary=${1%%:*}
+threads=${SEGMENT_THREADS:-1}
+cores=0-$((threads - 1))
 log="$dir/segments.log"
 : > "$log"
 run() { # binary N disc output duration [--restart]
   local extra=()
   [ "$3" = disc ] && extra=(--set particles.shape=disc)
-  taskset -c 0 "$1" -q --threads 1 dem "$root/cases/shape/blockiness-$2.yaml" -o "$4" \
+  taskset -c "$cores" "$1" -q --threads "$threads" dem "$root/cases/shape/blockiness-$2.yaml" -o "$4" \
     "${sets[@]}" "${extra[@]}" --set "time.duration=$5" "${@:6}" > /dev/null
 }
 for entry in "$@"; do

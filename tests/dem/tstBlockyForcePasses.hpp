@@ -4,7 +4,9 @@
 // blocks mixed with circles (pairs block-block, block-circle and circle-circle, with contact
 // history and pair directions), both give bitwise the same forces, torques, histories and pair
 // directions, over two evaluations in a row (nothing of the first pass's scratch leaks into the
-// next).
+// next). An all-circle system leaves the blocky kernel for the disc engine's (computeBlockyForces()
+// with circlesOnly); the blocky kernel's circle branch, which mixed systems use, gives bitwise the
+// same forces, torques and histories on such a bed, walls included.
 #include "BlockyTestUtils.hpp"
 #include "kernels/dem/BlockyForceKernel.hpp"
 
@@ -44,6 +46,23 @@ struct EveryRowEvaluates {
     tq(i) = t;
   }
 };
+
+// A host copy of a View.
+template <class View> auto onHost(const View& view) {
+  return Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, view);
+}
+
+// Forces and torques of two evaluations, bitwise.
+void expectSameForces(const ParticleArrays<memory>& first, const ParticleArrays<memory>& second,
+                      int round) {
+  const auto a = copyParticles<Kokkos::HostSpace>(first);
+  const auto b = copyParticles<Kokkos::HostSpace>(second);
+  for (std::size_t i = 0; i < a.count(); ++i) {
+    EXPECT_EQ(a.force(i, 0), b.force(i, 0)) << "round " << round << " particle " << i;
+    EXPECT_EQ(a.force(i, 1), b.force(i, 1)) << "round " << round << " particle " << i;
+    EXPECT_EQ(a.torque(i), b.torque(i)) << "round " << round << " particle " << i;
+  }
+}
 
 // A copy of the rows with their own history views (count and index shared).
 NeighborList<memory> historyCopy(const NeighborList<memory>& rows) {
@@ -86,21 +105,16 @@ TEST(TEST_CATEGORY, blocky_pair_pass_equals_every_row_evaluating) {
         EveryRowEvaluates{detail::blockyContacts(reference, blocky, rows, walls, settings),
                           reference.force, reference.torque});
     Kokkos::fence();
-    const auto a = copyParticles<Kokkos::HostSpace>(particles);
-    const auto b = copyParticles<Kokkos::HostSpace>(reference);
-    const auto count = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, rows.count);
-    const auto index = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, rows.index);
-    const auto shearA = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, passes.shear);
-    const auto shearB = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, rows.shear);
-    const auto angleA =
-        Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, passes.normalAngle);
-    const auto angleB = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, rows.normalAngle);
+    expectSameForces(particles, reference, round);
+    const auto count = onHost(rows.count);
+    const auto index = onHost(rows.index);
+    const auto shearA = onHost(passes.shear);
+    const auto shearB = onHost(rows.shear);
+    const auto angleA = onHost(passes.normalAngle);
+    const auto angleB = onHost(rows.normalAngle);
     const auto hostShapes = copyBlocky<Kokkos::HostSpace>(blocky);
     touchingShapes = touchingMixed = 0;
-    for (std::size_t i = 0; i < a.count(); ++i) {
-      EXPECT_EQ(a.force(i, 0), b.force(i, 0)) << "round " << round << " particle " << i;
-      EXPECT_EQ(a.force(i, 1), b.force(i, 1)) << "round " << round << " particle " << i;
-      EXPECT_EQ(a.torque(i), b.torque(i)) << "round " << round << " particle " << i;
+    for (std::size_t i = 0; i < particles.count(); ++i) {
       for (int k = 0; k < count(i); ++k) {
         EXPECT_EQ(shearA(i, k), shearB(i, k)) << "particle " << i << " slot " << k;
         EXPECT_EQ(angleA(i, k), angleB(i, k)) << "particle " << i << " slot " << k;
@@ -115,6 +129,54 @@ TEST(TEST_CATEGORY, blocky_pair_pass_equals_every_row_evaluating) {
   // the comparison covers many touching block-block and block-circle pairs (both rows each)
   EXPECT_GT(touchingShapes, 100);
   EXPECT_GT(touchingMixed, 50);
+}
+
+// A copy of the wall contact state (its own history).
+WallContactState<memory> wallCopy(const WallContactState<memory>& walls, std::size_t capacity) {
+  WallContactState<memory> copy(capacity);
+  Kokkos::deep_copy(copy.shear, walls.shear);
+  return copy;
+}
+
+TEST(TEST_CATEGORY, blocky_circle_branch_equals_disc_kernel) {
+  auto h = test::blockyDrumBed(200, 7);
+  const auto shapes = test::blockify(h, 2.0, 1.0, 0); // circles
+  DemSystem<space> sys(test::blockyDrumConfig());     // with rolling resistance
+  sys.setParticles(h, shapes);
+  sys.advance(3000); // settled and sheared: pair and wall contacts with history
+
+  const auto blocky = copyBlocky<memory>(sys.hostShapes());
+  const auto settings = sys.forceSettings();
+  const auto viaBlocky = copyParticles<memory>(sys.particles());
+  const auto viaDisc = copyParticles<memory>(sys.particles());
+  const NeighborList<memory> blockyRows = historyCopy(sys.neighborRows());
+  const NeighborList<memory> discRows = historyCopy(sys.neighborRows());
+  const auto blockyWalls = wallCopy(sys.wallContacts(), viaBlocky.capacity());
+  const auto discWalls = wallCopy(sys.wallContacts(), viaDisc.capacity());
+  BlockyPairOutcomes<memory> scratch;
+  for (int round = 0; round < 2; ++round) {
+    computeBlockyForces(space{}, viaBlocky, blocky, blockyRows, blockyWalls, settings, scratch,
+                        false);
+    computeForces(space{}, viaDisc, discRows, discWalls, settings);
+    Kokkos::fence();
+    expectSameForces(viaBlocky, viaDisc, round);
+    const auto count = onHost(discRows.count);
+    const auto shearA = onHost(blockyRows.shear);
+    const auto shearB = onHost(discRows.shear);
+    const auto wallA = onHost(blockyWalls.shear);
+    const auto wallB = onHost(discWalls.shear);
+    int sliding = 0, wallTouching = 0;
+    for (std::size_t i = 0; i < viaDisc.count(); ++i) {
+      for (int k = 0; k < count(i); ++k) {
+        EXPECT_EQ(shearA(i, k), shearB(i, k)) << "particle " << i << " slot " << k;
+        sliding += shearB(i, k) != 0.0;
+      }
+      EXPECT_EQ(wallA(i, 0), wallB(i, 0)) << "particle " << i;
+      wallTouching += wallB(i, 0) != 0.0;
+    }
+    EXPECT_GT(sliding, 200); // many pair contacts with history, and wall contacts
+    EXPECT_GT(wallTouching, 10);
+  }
 }
 
 } // namespace
