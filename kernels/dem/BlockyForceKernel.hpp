@@ -471,23 +471,18 @@ template <class MemorySpace>
 using BlockyPairOutcomes = Kokkos::View<detail::PairOutcome**, MemorySpace>;
 
 /// \brief Forces and torques of blocky particles [0, n) into p.force / p.torque; `outcomes` is
-/// reallocated when it does not match the list's shape. circlesOnly (every shape a circle): the
-/// disc engine's kernel, computeForces(), which gives bitwise the same forces, torques and
-/// histories as this kernel's circle branch (tstBlockyForcePasses.hpp) at the disc engine's
-/// cost (this kernel's per-slot shape and direction bookkeeping made an all-circle drum about
-/// twice as slow).
+/// reallocated when it does not match the list's shape. Its circle branch gives bitwise the
+/// forces, torques and histories of the disc engine's computeForces() (tstBlockyForcePasses.hpp),
+/// so a system of circles only calls that instead (DemSystem::evaluateForces): this kernel's
+/// per-slot shape and direction bookkeeping made an all-circle drum about twice as slow.
 template <class ExecutionSpace, class MemorySpace>
 void computeBlockyForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
                          BlockyArrays<MemorySpace> const& blocky,
                          NeighborList<MemorySpace> const& list,
                          WallContactState<MemorySpace> const& walls, ForceSettings const& settings,
-                         BlockyPairOutcomes<MemorySpace>& outcomes, bool circlesOnly = false) {
+                         BlockyPairOutcomes<MemorySpace>& outcomes) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::dem::computeBlockyForces: particle memory not accessible");
-  if (circlesOnly) {
-    computeForces(space, p, list, walls, settings);
-    return;
-  }
   if (outcomes.extent(0) != list.rows() ||
       outcomes.extent(1) != static_cast<std::size_t>(list.capacity())) {
     outcomes = BlockyPairOutcomes<MemorySpace>(

@@ -700,11 +700,12 @@ private:
     return list;
   }
 
-  // Contact, wall and gravity forces of the current state into the particle arrays.
+  // Contact, wall and gravity forces of the current state into the particle arrays. Blocky
+  // systems of circles only take the disc kernel: the same forces at its cost
+  // (computeBlockyForces()).
   void evaluateForces(const ForceSettings& settings) {
-    if (_isBlocky) {
-      computeBlockyForces(_space, _particles, _blocky, _list, _walls, settings, _pairOutcomes,
-                          _circlesOnly);
+    if (_isBlocky && !_circlesOnly) {
+      computeBlockyForces(_space, _particles, _blocky, _list, _walls, settings, _pairOutcomes);
     } else {
       computeForces(_space, _particles, _list, _walls, settings, sliceTable());
     }
@@ -973,7 +974,7 @@ private:
   BlockyArrays<memory_space> _blocky;             // blocky systems: shapes and orientations
   Kokkos::View<double*, memory_space> _area;      // blocky systems: true particle areas
   BlockyPairOutcomes<memory_space> _pairOutcomes; // blocky systems: force pass scratch
-  bool _circlesOnly = false; // blocky systems: every shape a circle (no pair pass needed)
+  bool _circlesOnly = false; // blocky systems: every shape a circle (the disc force kernel)
   bool _isBlocky = false;
   Kokkos::View<int*, memory_space> _slice;                   // batches: each particle's slice
   Kokkos::View<ForceSettings*, memory_space> _sliceSettings; // batches: per-slice settings

@@ -4,9 +4,9 @@
 // blocks mixed with circles (pairs block-block, block-circle and circle-circle, with contact
 // history and pair directions), both give bitwise the same forces, torques, histories and pair
 // directions, over two evaluations in a row (nothing of the first pass's scratch leaks into the
-// next). An all-circle system leaves the blocky kernel for the disc engine's (computeBlockyForces()
-// with circlesOnly); the blocky kernel's circle branch, which mixed systems use, gives bitwise the
-// same forces, torques and histories on such a bed, walls included.
+// next). An all-circle system takes the disc engine's kernel instead (DemSystem::evaluateForces);
+// the blocky kernel's circle branch, which mixed systems use, gives bitwise the same forces,
+// torques and histories on such a bed, walls included.
 #include "BlockyTestUtils.hpp"
 #include "kernels/dem/BlockyForceKernel.hpp"
 
@@ -155,8 +155,7 @@ TEST(TEST_CATEGORY, blocky_circle_branch_equals_disc_kernel) {
   const auto discWalls = wallCopy(sys.wallContacts(), viaDisc.capacity());
   BlockyPairOutcomes<memory> scratch;
   for (int round = 0; round < 2; ++round) {
-    computeBlockyForces(space{}, viaBlocky, blocky, blockyRows, blockyWalls, settings, scratch,
-                        false);
+    computeBlockyForces(space{}, viaBlocky, blocky, blockyRows, blockyWalls, settings, scratch);
     computeForces(space{}, viaDisc, discRows, discWalls, settings);
     Kokkos::fence();
     expectSameForces(viaBlocky, viaDisc, round);
