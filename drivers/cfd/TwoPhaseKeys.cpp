@@ -90,15 +90,21 @@ void addTwoPhaseKeys(cases::CaseSchema& s) {
            "below); slip (before 2026-12-04): the Coulomb cap, zero without bed, let the gas "
            "slide freely, and with the incremental projection a gas jet ran up the inclined "
            "kiln's shell (docs/compare.md)");
-  const char* const solves[][3] = {{"momentum", "1e-9", "momentum (viscous)"},
-                                   {"pressure", "1e-11", "pressure"}};
+  const char* const solves[][4] = {{"momentum", "1e-9", "momentum (viscous)", "u^n"},
+                                   {"pressure", "1e-11", "pressure", "p = 0"}};
   for (auto const& solve : solves) {
     s.real(std::string("numerics.") + solve[0] + "_tolerance")
         .unit("1")
         .range(0, 0.1, Bounds::OpenMin)
         .defaultsTo(solve[1])
-        .doc(std::string("The ") + solve[2] + " solve stops at this residual over its initial one");
+        .doc(std::string("The ") + solve[2] + " solve stops at this residual over that of its " +
+             "cold start (from " + solve[3] + "), also when numerics.warm_start starts it closer");
   }
+  s.boolean("numerics.warm_start")
+      .defaultsTo("true")
+      .doc("Start the momentum solve from u^n moved by the last step's predictor change, and the "
+           "pressure solve from the last pressure; the tolerances keep referring to the cold "
+           "starts, so only the iterations change (perf/README.md)");
   s.require("viscosity_max above the gas viscosity", [](const cases::CaseFile& c) {
     return c.real("rheology.viscosity_max") > c.real("gas.viscosity");
   });
@@ -115,6 +121,7 @@ std::string readTwoPhaseKeys(const cases::CaseFile& c, TwoPhaseParameters& p) {
   p.shellHoldsGas = c.string("numerics.shell_gas") == "no_slip";
   p.viscousTolerance = c.real("numerics.momentum_tolerance");
   p.pressureTolerance = c.real("numerics.pressure_tolerance");
+  p.warmStart = c.boolean("numerics.warm_start");
   GranularRheology& r = p.rheology;
   r.phiMax = c.real("material.phi_max");
   r.gasViscosity = c.real("gas.viscosity");

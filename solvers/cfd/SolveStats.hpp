@@ -39,10 +39,12 @@ struct MultigridOptions {
 /// \brief What an iterative solve did: residual 2-norms over the unknowns.
 struct SolveStats {
   int iterations = 0;
-  bool converged = false;       ///< the iteration's residual reached tolerance * initialResidual
+  bool converged = false;       ///< the iteration's residual reached tolerance * referenceResidual
   double initialResidual = 0.0; ///< ||f - A x_0||
-  double finalResidual = 0.0;   ///< true residual at the end (recomputed, not the recursion)
-  std::vector<double> history;  ///< residual before the first and after every iteration
+  double referenceResidual = 0.0; ///< what the tolerance refers to: initialResidual, or the
+                                  ///< residual of a colder start the caller gave (solvePcg)
+  double finalResidual = 0.0;     ///< true residual at the end (recomputed, not the recursion)
+  std::vector<double> history;    ///< residual before the first and after every iteration
   double seconds = 0.0; ///< wall time of the solve with its set-up, where the caller timed it
 
   /// \brief Geometric mean of the residual reduction per iteration.

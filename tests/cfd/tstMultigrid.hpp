@@ -1,6 +1,7 @@
 // Multigrid performance in numbers: residual reduction per V-cycle and iteration counts across
 // grid sizes (2D, 3D, flat domains), PCG across a 1e3 density jump (a drum-like bed), the
-// Neumann null space, the direct single-level path and the coarse-size guard.
+// Neumann null space, a warm start's stopping rule, the direct single-level path and the
+// coarse-size guard.
 #include "CfdTestUtils.hpp"
 #include "kernels/cfd/CellOperator.hpp"
 #include "kernels/cfd/ShellGeometry.hpp"
@@ -208,6 +209,44 @@ TEST(TEST_CATEGORY, pcg_shell_masked_singular_converges) {
     EXPECT_LE(stats.finalResidual, 1e-10 * stats.initialResidual) << "n = " << n;
     EXPECT_LE(stats.iterations, 30) << "n = " << n; // measured 19 / 27 / 18
   }
+}
+
+TEST(TEST_CATEGORY, pcg_warm_start_stops_at_the_cold_target) {
+  // A warm start (x from a neighbouring problem's solution) given the cold start's residual as
+  // its reference stops at the cold start's target in fewer iterations; referred to its own,
+  // smaller residual it would iterate on to a tighter target.
+  const space s{};
+  const Grid g = makeGrid(64, 64, 1, 2.0, 2.0, 2.0 / 64, -1.0, -1.0);
+  const ShellPressure sp = shellPressure(s, g);
+  MultigridOptions options;
+  options.tolerance = 1e-11;
+  CellMultigrid<space> mg(s, g, ScalarBoundaries(), sp.alpha, sp.beta, options, sp.cut.capacity);
+  const field f = test::randomField(s, g, 11);
+  const field x0 = makeField(s, g, Staggering::Cell, "hikiln::test::cfd::x0");
+  ASSERT_TRUE(mg.solvePcg(x0, f).converged);
+  // the next problem: f moved by 1e-3 of a second random field
+  const field next = test::randomField(s, g, 12);
+  axpbyUnknowns(s, unknownBox(g, mg.levelOperator(0).axis), 1.0, f, 1e-3, next);
+  const field cold = makeField(s, g, Staggering::Cell, "hikiln::test::cfd::cold");
+  const double reference = mg.residualNorm(cold, next);
+  const SolveStats fromCold = mg.solvePcg(cold, next);
+  const auto warmFrom = [&](double ref) {
+    const field x = makeField(s, g, Staggering::Cell, "hikiln::test::cfd::warm");
+    Kokkos::deep_copy(s, x, x0);
+    return mg.solvePcg(x, next, ref);
+  };
+  const SolveStats warm = warmFrom(reference);
+  const SolveStats ownTarget = warmFrom(0.0);
+  std::cout << "closed shell 64^2, next problem: PCG iterations cold " << fromCold.iterations
+            << ", warm " << warm.iterations << " (start at " << warm.initialResidual / reference
+            << " of the cold residual), warm to its own target " << ownTarget.iterations << "\n";
+  EXPECT_DOUBLE_EQ(fromCold.referenceResidual, reference);
+  EXPECT_DOUBLE_EQ(warm.referenceResidual, reference);
+  EXPECT_LT(warm.initialResidual, 1e-2 * reference);
+  EXPECT_TRUE(warm.converged);
+  EXPECT_LE(warm.finalResidual, 10.0 * options.tolerance * reference);
+  EXPECT_LT(warm.iterations, fromCold.iterations);
+  EXPECT_LT(warm.iterations, ownTarget.iterations);
 }
 
 TEST(TEST_CATEGORY, multigrid_single_level_direct_solve_is_exact) {
