@@ -77,6 +77,7 @@ public:
     Level& fine = _levels.front();
     SolveStats stats;
     stats.initialResidual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, fine.res, true));
+    stats.referenceResidual = stats.initialResidual;
     stats.history.push_back(stats.initialResidual);
     double residual = stats.initialResidual;
     while (residual > _options.tolerance * stats.initialResidual &&

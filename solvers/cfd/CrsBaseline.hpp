@@ -220,7 +220,7 @@ public:
     Kokkos::deep_copy(_space, _r, _b);
     KokkosSparse::spmv("N", -1.0, _matrix, _x, 1.0, _r);
     double residual = KokkosBlas::nrm2(_r);
-    stats.initialResidual = residual;
+    stats.initialResidual = stats.referenceResidual = residual;
     stats.history.push_back(residual);
     if (residual > 0.0) {
       KokkosBlas::mult(0.0, _z, 1.0, _inverseDiagonal, _r);

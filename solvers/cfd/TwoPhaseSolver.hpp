@@ -243,7 +243,7 @@ public:
       }
     }
     if (params.warmStart) {
-      _pWarm = cellField("hikiln::cfd::pWarm");
+      _zeroCells = cellField("hikiln::cfd::zeroCells");
     }
     _fct = makeFctWork(space, grid);
     for (int a = 0; a < 3; ++a) {
@@ -852,15 +852,12 @@ private:
     // own, much smaller residual, round-off stalled the iteration.
     double coldResidual = 0.0;
     if (_params.warmStart) {
-      Kokkos::deep_copy(_space, _pWarm, p);
+      coldResidual = mg.residualNorm(_zeroCells, _div);
       if (outflow) {
-        axpbyUnknowns(_space, _cells, -1.0, _gasHead, 1.0, _pWarm);
+        axpbyUnknowns(_space, _cells, -1.0, _gasHead, 1.0, p);
       }
-    }
-    Kokkos::deep_copy(_space, p, 0.0);
-    if (_params.warmStart) {
-      coldResidual = mg.residualNorm(p, _div);
-      Kokkos::deep_copy(_space, p, _pWarm);
+    } else {
+      Kokkos::deep_copy(_space, p, 0.0);
     }
     SolveStats stats = mg.solvePcg(p, _div, coldResidual);
     stats.seconds = elapsedSince(start);
@@ -965,7 +962,7 @@ private:
   velocity_type _u, _uStar, _rhs;
   velocity_type _accel;           ///< the incremental projection's carried acceleration (step 4)
   velocity_type _predictorChange; ///< u* less its cold guess, last step (warmMomentumStart)
-  field_type _pWarm;              ///< the pressure solve's warm start (project)
+  field_type _zeroCells;          ///< stays 0: the pressure's cold start (project)
   field_type _alpha[3], _rhoFace[3], _beta[3];
   FctWork<memory_space> _fct;
   field_type _T, _Tstar, _phiOld, _kappa, _tAlpha, _tRhs, _tBeta[3];

@@ -73,6 +73,7 @@ public:
     Level& fine = _levels.front();
     SolveStats stats;
     stats.initialResidual = std::sqrt(viscousResidual(_space, fine.op, u, rhs, fine.res, true));
+    stats.referenceResidual = stats.initialResidual;
     stats.history.push_back(stats.initialResidual);
     double residual = stats.initialResidual;
     while (residual > _options.tolerance * stats.initialResidual &&
