@@ -57,9 +57,9 @@ public:
   /// \brief Builds the hierarchy for the operator with cell coefficient alpha (an empty View
   /// for alpha = 0) and face coefficients beta (FaceX, FaceY, FaceZ; beta[2] unused in 2D) on
   /// grid with boundary conditions bc. The fields are referenced, not copied: change them and
-  /// build a new solver. Throws if the coarsest level is too large for the direct solve.
-  /// With `open` (> 0 in the cells that belong to the problem, e.g. a cut-cell capacity), alpha
-  /// is coarsened over the open children only: see setupLevels.
+  /// call refresh() (or build a new solver). Throws if the coarsest level is too large for the
+  /// direct solve. With `open` (> 0 in the cells that belong to the problem, e.g. a cut-cell
+  /// capacity), alpha is coarsened over the open children only: see coarsenCoefficients.
   CellMultigrid(ExecutionSpace const& space, Grid const& grid, ScalarBoundaries const& bc,
                 field_type const& alpha, field_type const (&beta)[3],
                 MultigridOptions const& options = MultigridOptions(),
@@ -67,6 +67,16 @@ public:
       : _space(space), _bc(bc), _options(options) {
     checkBoundaries(grid, bc);
     setupLevels(grid, alpha, beta, open);
+    refresh();
+  }
+
+  /// \brief Takes the current values of the referenced fine coefficients (alpha, beta, open):
+  /// coarsens them again and rebuilds the coarsest level's solve, in the fields allocated at
+  /// construction. A solver kept across time steps (TwoPhaseSolver) saves allocating and
+  /// zeroing its hierarchy every step.
+  void refresh() {
+    coarsenCoefficients();
+    setupOpenNullVector();
     setupCoarseSolve();
   }
 
@@ -168,6 +178,8 @@ public:
   operator_type const& levelOperator(int level) const { return _levels.at(level).op; }
   /// \brief Unknowns of the dense coarsest-level solve.
   int coarseUnknowns() const { return _coarse.size(); }
+  /// \brief Operator applications that probed the coarsest level's matrix.
+  int coarseProbes() const { return _coarse.probes(); }
   /// \brief True when the operator has a constant null space (no alpha, no Dirichlet side).
   bool singular() const { return _singular; }
   /// \brief The execution space instance the solver runs on.
@@ -178,13 +190,12 @@ private:
     operator_type op;
     UnknownBox box;
     field_type x, rhs, res;
+    field_type open;    ///< where alpha is averaged from (coarsenCoefficients); may be empty
     Transfer fromFiner; ///< transfer between the next finer level and this one
   };
 
-  /// Coefficients of the coarse levels (see the file comment). With `open`, a coarse cell takes
-  /// the mean of alpha over its open children and is open when one of them is: the alpha that
-  /// only decouples the cells outside a shell (they have no open face) then stays out of the
-  /// coarse cells that straddle the shell, where it would be a sink the fine problem lacks.
+  /// The hierarchy's grids, closures and fields; the fine level references the caller's
+  /// coefficients.
   void setupLevels(Grid const& grid, field_type const& alpha, field_type const (&beta)[3],
                    field_type const& open) {
     const bool periodic[3] = {_bc.periodic(0), _bc.periodic(1), _bc.periodic(2)};
@@ -195,7 +206,6 @@ private:
       _singular = _singular && _bc.kind[side] != BoundaryKind::Value;
     }
     const int numAxes = grid.is3D() ? 3 : 2;
-    field_type finerOpen = hasAlpha ? open : field_type();
     for (std::size_t l = 0; l < geometry.size(); ++l) {
       Level level;
       Grid const& g = geometry[l].grid;
@@ -205,6 +215,7 @@ private:
       level.res = makeField(_space, g, Staggering::Cell, "hikiln::cfd::mg::res");
       if (l == 0) {
         level.op.alpha = alpha;
+        level.open = hasAlpha ? open : field_type();
         for (int a = 0; a < 3; ++a) {
           level.op.beta[a] = beta[a];
         }
@@ -217,24 +228,36 @@ private:
       level.fromFiner = makeTransfer(finer.op, level.op, geometry[l].ratio, _options);
       if (hasAlpha) {
         level.op.alpha = makeField(_space, g, Staggering::Cell, "hikiln::cfd::mg::alpha");
-        const field_type coarseOpen =
-            finerOpen.extent(0) > 0
-                ? makeField(_space, g, Staggering::Cell, "hikiln::cfd::mg::open")
-                : field_type();
-        averageDown(_space, level.fromFiner, NodeAverage::Inject, finer.op.alpha, level.op.alpha,
-                    finerOpen, coarseOpen);
-        finerOpen = coarseOpen;
+        if (finer.open.extent(0) > 0) {
+          level.open = makeField(_space, g, Staggering::Cell, "hikiln::cfd::mg::open");
+        }
       }
       for (int a = 0; a < numAxes; ++a) {
         level.op.beta[a] = makeField(_space, g, faceStaggering(a), "hikiln::cfd::mg::beta");
+      }
+      _levels.push_back(level);
+    }
+  }
+
+  /// Coefficients of the coarse levels (see the file comment). With `open`, a coarse cell takes
+  /// the mean of alpha over its open children and is open when one of them is: the alpha that
+  /// only decouples the cells outside a shell (they have no open face) then stays out of the
+  /// coarse cells that straddle the shell, where it would be a sink the fine problem lacks.
+  void coarsenCoefficients() {
+    for (std::size_t l = 1; l < _levels.size(); ++l) {
+      Level const& finer = _levels[l - 1];
+      Level& level = _levels[l];
+      if (level.op.alpha.extent(0) > 0) {
+        averageDown(_space, level.fromFiner, NodeAverage::Inject, finer.op.alpha, level.op.alpha,
+                    finer.open, level.open);
+      }
+      for (int a = 0; a < (level.op.grid.is3D() ? 3 : 2); ++a) {
         Transfer faces = level.fromFiner;
         faces.axis[a].fine.node = true;
         faces.axis[a].coarse.node = true;
         averageDown(_space, faces, NodeAverage::Inject, finer.op.beta[a], level.op.beta[a]);
       }
-      _levels.push_back(level);
     }
-    setupOpenNullVector(open);
   }
 
   /// With `open`, no alpha on the open cells and no side with a given value, the operator is
@@ -245,9 +268,10 @@ private:
   /// perf/README.md). The right-hand side and every residual and preconditioned residual are
   /// therefore kept orthogonal to it (removeNullComponent, as the constant of a singular
   /// operator).
-  void setupOpenNullVector(field_type const& open) {
+  void setupOpenNullVector() {
     Level const& fine = _levels.front();
-    if (open.extent(0) == 0 || fine.op.alpha.extent(0) == 0 || _singular) {
+    _openCount = 0.0;
+    if (fine.open.extent(0) == 0 || fine.op.alpha.extent(0) == 0 || _singular) {
       return;
     }
     for (int side = 0; side < 6; ++side) {
@@ -255,12 +279,12 @@ private:
         return;
       }
     }
-    const field_type indicator =
-        makeField(_space, fine.op.grid, Staggering::Cell, "hikiln::cfd::mg::openCells");
-    indicatorUnknowns(_space, fine.box, open, indicator);
-    const double count = sumUnknowns(_space, fine.box, indicator);
-    if (count > 0.0 && dotUnknowns(_space, fine.box, fine.op.alpha, indicator) == 0.0) {
-      _openCells = indicator;
+    if (_openCells.extent(0) == 0) {
+      _openCells = makeField(_space, fine.op.grid, Staggering::Cell, "hikiln::cfd::mg::openCells");
+    }
+    indicatorUnknowns(_space, fine.box, fine.open, _openCells);
+    const double count = sumUnknowns(_space, fine.box, _openCells);
+    if (count > 0.0 && dotUnknowns(_space, fine.box, fine.op.alpha, _openCells) == 0.0) {
       _openCount = count;
     }
   }
@@ -305,7 +329,7 @@ private:
           " cells, more than maxDirectUnknowns = " + std::to_string(_options.maxDirectUnknowns) +
           "; use cell counts with more factors of 2 (periodic axes: even counts)");
     }
-    if (_levels.size() == 1) {
+    if (last.x.extent(0) == 0) {
       last.x = makeField(_space, last.op.grid, Staggering::Cell, "hikiln::cfd::mg::x");
     }
     field_type probeIn = last.x;
@@ -313,8 +337,13 @@ private:
     const operator_type op = last.op;
     const UnknownBox box = last.box;
     ExecutionSpace const space = _space;
+    CoarseUnknowns unknowns;
+    unknowns.box[0] = box;
+    for (int a = 0; a < 3; ++a) {
+      unknowns.periodic[a] = _bc.periodic(a);
+    }
     _coarse.build(
-        _space, static_cast<int>(n),
+        _space, unknowns, _options.colouredProbe,
         [&](auto const& unit, auto const& column) {
           unpackUnknowns(space, box, unit, 0, probeIn);
           applyCellOperator(space, op, probeIn, probeOut, false);
@@ -384,8 +413,8 @@ private:
   std::vector<Level> _levels;
   DenseCoarseSolver<ExecutionSpace> _coarse;
   bool _singular = false;
-  field_type _openCells;   ///< indicator of the open cells when singular on them, else empty
-  double _openCount = 0.0; ///< their number (0: not singular on the open cells)
+  field_type _openCells;   ///< indicator of the open cells (used when _openCount > 0)
+  double _openCount = 0.0; ///< their number when singular on them, else 0
   field_type _rhs0, _r, _z, _p, _q;
 };
 

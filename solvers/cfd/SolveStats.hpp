@@ -31,9 +31,10 @@ struct MultigridOptions {
   CoarseningOptions coarsening;
   std::int64_t maxDirectUnknowns = 1024; ///< largest coarsest level solved densely
   double pseudoInverseTolerance = 1e-12; ///< relative eigenvalue cut of the coarse solve
-  double tolerance = 1e-10;              ///< stop at ||r|| <= tolerance * ||r_0||
-  int maxIterations = 100;               ///< V-cycles or PCG iterations
-  bool harmonicEdgeViscosity = false;    ///< viscous solves: EdgeViscosity::Harmonic on every level
+  bool colouredProbe = true; ///< probe the coarse matrix many columns at a time (DenseCoarseSolver)
+  double tolerance = 1e-10;  ///< stop at ||r|| <= tolerance * ||r_0||
+  int maxIterations = 100;   ///< V-cycles or PCG iterations
+  bool harmonicEdgeViscosity = false; ///< viscous solves: EdgeViscosity::Harmonic on every level
 };
 
 /// \brief What an iterative solve did: residual 2-norms over the unknowns.

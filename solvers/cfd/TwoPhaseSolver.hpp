@@ -76,6 +76,7 @@
 #include <chrono>
 #include <cmath>
 #include <iterator>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -435,16 +436,15 @@ public:
         addCarriedAcceleration(_space, _cut, c, _rhoFace[c], _accel.comp[c], _rhs.comp[c]);
       }
     }
-    MultigridOptions vopt;
-    vopt.tolerance = _params.viscousTolerance;
-    vopt.maxIterations = _params.maxIterations;
-    vopt.harmonicEdgeViscosity = _params.harmonicEdgeViscosity;
     // the open ends' normal velocities are data of the solve: u^n's (inflow given, outflow
     // from the last projection)
     copyEndNodes(_u.comp[2], _uStar.comp[2]);
     const auto viscousStart = startSolveClock();
-    ViscousMultigrid<ExecutionSpace> viscous(_space, _grid, _velocityBc, _alpha, _mu, vopt,
-                                             wallLawApertures());
+    ViscousMultigrid<ExecutionSpace>& viscous = keptMultigrid(_momentumMg, [&] {
+      return std::make_unique<ViscousMultigrid<ExecutionSpace>>(
+          _space, _grid, _velocityBc, _alpha, _mu, multigridOptions(_params.viscousTolerance),
+          wallLawApertures());
+    });
     const double coldResidual = warmMomentumStart(viscous, dt);
     report.viscous = viscous.solvePcg(_uStar, _rhs, coldResidual);
     if (_params.warmStart) {
@@ -726,10 +726,10 @@ private:
     }
     diffusionCoefficients(_space, _cut, _periodic, heat, thermal, phiMax, dt, _phi, _Tstar, _kappa,
                           _tAlpha, _tBeta, _tRhs);
-    MultigridOptions topt;
-    topt.tolerance = _params.pressureTolerance;
-    topt.maxIterations = _params.maxIterations;
-    CellMultigrid<ExecutionSpace> mg(_space, _grid, _heatBc, _tAlpha, _tBeta, topt);
+    CellMultigrid<ExecutionSpace>& mg = keptMultigrid(_heatMg, [&] {
+      return std::make_unique<CellMultigrid<ExecutionSpace>>(
+          _space, _grid, _heatBc, _tAlpha, _tBeta, multigridOptions(_params.pressureTolerance));
+    });
     Kokkos::deep_copy(_space, T, _Tstar);
     result.solve = mg.solvePcg(T, _tRhs);
     if (!result.solve.converged) {
@@ -842,11 +842,11 @@ private:
     pressureCoefficients(_space, _cut, _rhoFace, removedAlpha, _pAlpha, _beta);
     apertureDivergence(_space, _cut, u, _div);
     axpbyUnknowns(_space, _cells, -1.0 / dt, _div, 0.0, _div);
-    MultigridOptions popt;
-    popt.tolerance = _params.pressureTolerance;
-    popt.maxIterations = _params.maxIterations;
-    CellMultigrid<ExecutionSpace> mg(_space, _grid, _pressureBc, _pAlpha, _beta, popt,
-                                     _cut.capacity);
+    CellMultigrid<ExecutionSpace>& mg = keptMultigrid(_pressureMg, [&] {
+      return std::make_unique<CellMultigrid<ExecutionSpace>>(
+          _space, _grid, _pressureBc, _pAlpha, _beta, multigridOptions(_params.pressureTolerance),
+          _cut.capacity);
+    });
     // The stopping rule refers to the cold start's residual (p = 0). A warm start from the last
     // pressure (less the gas head where p' is solved for) only gets there sooner; referred to its
     // own, much smaller residual, round-off stalled the iteration.
@@ -874,6 +874,26 @@ private:
       axpbyUnknowns(_space, _cells, 1.0, _gasHead, 1.0, p);
     }
     return stats;
+  }
+
+  // The three solves' multigrids reference this solver's coefficient fields (_alpha and _mu;
+  // _pAlpha, _beta and the capacity; _tAlpha and _tBeta). Made by the first solve, they are
+  // refreshed with the new coefficients by every later one, so a step allocates nothing.
+  template <class Multigrid, class Make>
+  static Multigrid& keptMultigrid(std::unique_ptr<Multigrid>& kept, Make&& make) {
+    if (kept) {
+      kept->refresh();
+    } else {
+      kept = make();
+    }
+    return *kept;
+  }
+  MultigridOptions multigridOptions(double tolerance) const {
+    MultigridOptions options;
+    options.tolerance = tolerance;
+    options.maxIterations = _params.maxIterations;
+    options.harmonicEdgeViscosity = _params.harmonicEdgeViscosity; // viscous solves only
+    return options;
   }
 
   /// \brief The time a solve starts, once the work queued before it has finished.
@@ -963,6 +983,8 @@ private:
   velocity_type _accel;           ///< the incremental projection's carried acceleration (step 4)
   velocity_type _predictorChange; ///< u* less its cold guess, last step (warmMomentumStart)
   field_type _zeroCells;          ///< stays 0: the pressure's cold start (project)
+  std::unique_ptr<ViscousMultigrid<ExecutionSpace>> _momentumMg; ///< momentumMultigrid()
+  std::unique_ptr<CellMultigrid<ExecutionSpace>> _pressureMg, _heatMg;
   field_type _alpha[3], _rhoFace[3], _beta[3];
   FctWork<memory_space> _fct;
   field_type _T, _Tstar, _phiOld, _kappa, _tAlpha, _tRhs, _tBeta[3];

@@ -51,9 +51,10 @@ public:
 
   /// \brief Builds the hierarchy for alpha (per component on its faces; empty Views for
   /// alpha = 0) and cell viscosity mu on grid with velocity boundary conditions bc. The fields
-  /// are referenced, not copied (the edge viscosities are computed here). `open` (face
-  /// apertures, optional): the fine operator leaves out the stresses that read closed faces
-  /// (ViscousOperator.hpp); the coarse levels, a preconditioner only, keep them.
+  /// are referenced, not copied (the edge viscosities are computed here): change them and call
+  /// refresh(). `open` (face apertures, optional): the fine operator leaves out the stresses
+  /// that read closed faces (ViscousOperator.hpp); the coarse levels, a preconditioner only,
+  /// keep them.
   ViscousMultigrid(ExecutionSpace const& space, Grid const& grid, VelocityBoundaries const& bc,
                    field_type const (&alpha)[3], field_type const& mu,
                    MultigridOptions const& options = MultigridOptions(),
@@ -61,6 +62,14 @@ public:
       : _space(space), _bc(bc), _options(options) {
     checkBoundaries(grid, bc);
     setupLevels(grid, alpha, mu, open);
+    refresh();
+  }
+
+  /// \brief Takes the current values of the referenced fine alpha, mu and open: recomputes the
+  /// edge viscosities and the coarse coefficients and rebuilds the coarsest level's solve, in
+  /// the fields allocated at construction (as CellMultigrid::refresh).
+  void refresh() {
+    coarsenCoefficients();
     setupCoarseSolve();
   }
 
@@ -180,6 +189,8 @@ public:
   operator_type const& levelOperator(int level) const { return _levels.at(level).op; }
   /// \brief Unknowns of the dense coarsest-level solve (all components).
   int coarseUnknowns() const { return _coarse.size(); }
+  /// \brief Operator applications that probed the coarsest level's matrix.
+  int coarseProbes() const { return _coarse.probes(); }
   /// \brief True when the operator has constant null vectors (no alpha, all axes periodic).
   bool singular() const { return _singular; }
   /// \brief Velocity components (2 or 3).
@@ -190,7 +201,8 @@ private:
     operator_type op;
     UnknownBox box[3];
     velocity_type x, rhs, res;
-    Transfer fromFiner[3]; ///< per component, between the next finer level and this one
+    velocity_type alphaOpen; ///< where alpha is averaged from (coarsenCoefficients); may be empty
+    Transfer fromFiner[3];   ///< per component, between the next finer level and this one
   };
 
   velocity_type makeVelocity(Grid const& g, const char* label) const {
@@ -201,6 +213,8 @@ private:
     return v;
   }
 
+  /// The hierarchy's grids, closures and fields; the fine level references the caller's
+  /// coefficients.
   void setupLevels(Grid const& grid, field_type const (&alpha)[3], field_type const& mu,
                    velocity_type const& open) {
     const bool periodic[3] = {_bc.periodic(0), _bc.periodic(1), _bc.periodic(2)};
@@ -213,10 +227,6 @@ private:
     }
     // with `open`, alpha is coarsened over the open faces of the next finer level (averageDown)
     const bool overOpen = hasAlpha && open.comp[0].extent(0) > 0;
-    field_type finerOpen[3];
-    for (int c = 0; c < numComps && overOpen; ++c) {
-      finerOpen[c] = open.comp[c];
-    }
     for (std::size_t l = 0; l < geometry.size(); ++l) {
       Level level;
       Grid const& g = geometry[l].grid;
@@ -236,6 +246,9 @@ private:
         for (int c = 0; c < 3; ++c) {
           level.op.alpha[c] = alpha[c];
         }
+        if (overOpen) {
+          level.alphaOpen = open;
+        }
       } else {
         level.x = makeVelocity(g, "hikiln::cfd::viscous::x");
         level.rhs = makeVelocity(g, "hikiln::cfd::viscous::rhs");
@@ -244,30 +257,39 @@ private:
           level.fromFiner[c] = makeTransfer(finer, level, c, geometry[l].ratio);
         }
         level.op.mu = makeField(_space, g, Staggering::Cell, "hikiln::cfd::viscous::mu");
-        Transfer cells = level.fromFiner[0];
-        cells.axis[0].fine.node = cells.axis[0].coarse.node = false;
-        averageDown(_space, cells, NodeAverage::Inject, finer.op.mu, level.op.mu);
         if (hasAlpha) {
           for (int c = 0; c < numComps; ++c) {
             level.op.alpha[c] =
                 makeField(_space, g, faceStaggering(c), "hikiln::cfd::viscous::alpha");
-            if (overOpen) {
-              const field_type coarseOpen =
-                  makeField(_space, g, faceStaggering(c), "hikiln::cfd::viscous::open");
-              averageDown(_space, level.fromFiner[c], NodeAverage::FullWeighting, finer.op.alpha[c],
-                          level.op.alpha[c], finerOpen[c], coarseOpen);
-              finerOpen[c] = coarseOpen;
-            } else {
-              averageDown(_space, level.fromFiner[c], NodeAverage::FullWeighting, finer.op.alpha[c],
-                          level.op.alpha[c]);
-            }
           }
         }
+        if (overOpen) {
+          level.alphaOpen = makeVelocity(g, "hikiln::cfd::viscous::open");
+        }
       }
-      edgeViscosities(_space, g, periodic, level.op.mu, level.op.muEdge, level.op.open,
+      _levels.push_back(level);
+    }
+  }
+
+  /// Per level the edge viscosities; on the coarse levels mu averaged over the children and
+  /// alpha full-weighted (over the open faces of the finer level where there is a mask).
+  void coarsenCoefficients() {
+    const bool periodic[3] = {_bc.periodic(0), _bc.periodic(1), _bc.periodic(2)};
+    for (std::size_t l = 0; l < _levels.size(); ++l) {
+      Level& level = _levels[l];
+      if (l > 0) {
+        Level const& finer = _levels[l - 1];
+        Transfer cells = level.fromFiner[0];
+        cells.axis[0].fine.node = cells.axis[0].coarse.node = false;
+        averageDown(_space, cells, NodeAverage::Inject, finer.op.mu, level.op.mu);
+        for (int c = 0; c < level.op.numComponents() && level.op.alpha[0].extent(0) > 0; ++c) {
+          averageDown(_space, level.fromFiner[c], NodeAverage::FullWeighting, finer.op.alpha[c],
+                      level.op.alpha[c], finer.alphaOpen.comp[c], level.alphaOpen.comp[c]);
+        }
+      }
+      edgeViscosities(_space, level.op.grid, periodic, level.op.mu, level.op.muEdge, level.op.open,
                       _options.harmonicEdgeViscosity ? EdgeViscosity::Harmonic
                                                      : EdgeViscosity::Arithmetic);
-      _levels.push_back(level);
     }
   }
 
@@ -303,15 +325,21 @@ private:
     for (int c = 0; c < 4; ++c) {
       _coarseOffsets[c] = offsets[c];
     }
-    if (_levels.size() == 1) {
+    if (last.x.comp[0].extent(0) == 0) {
       last.x = makeVelocity(last.op.grid, "hikiln::cfd::viscous::x");
     }
     const velocity_type probeIn = last.x;
     const velocity_type probeOut = last.res;
     const operator_type op = last.op;
     ExecutionSpace const space = _space;
+    CoarseUnknowns unknowns;
+    unknowns.numComponents = numComps;
+    for (int a = 0; a < 3; ++a) {
+      unknowns.box[a] = last.box[a];
+      unknowns.periodic[a] = _bc.periodic(a);
+    }
     _coarse.build(
-        _space, static_cast<int>(n),
+        _space, unknowns, _options.colouredProbe,
         [&](auto const& unit, auto const& column) {
           for (int c = 0; c < numComps; ++c) {
             unpackUnknowns(space, last.box[c], unit, offsets[c], probeIn.comp[c]);
