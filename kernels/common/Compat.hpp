@@ -46,14 +46,24 @@ HIKILN_COMPAT_UNARY(floor)
 HIKILN_COMPAT_UNARY(ceil)
 HIKILN_COMPAT_UNARY(isfinite)
 HIKILN_COMPAT_UNARY(isnan)
-HIKILN_COMPAT_BINARY(fmin)
-HIKILN_COMPAT_BINARY(fmax)
 HIKILN_COMPAT_BINARY(pow)
 HIKILN_COMPAT_BINARY(atan2)
 HIKILN_COMPAT_BINARY(hypot)
 HIKILN_COMPAT_BINARY(fmod)
 #undef HIKILN_COMPAT_UNARY
 #undef HIKILN_COMPAT_BINARY
+
+/// \brief fmin / fmax written out: on x86-64 std::fmin and std::fmax are calls into libm (GCC
+/// inlines them only under -ffinite-math-only), which kept the limiter and rheology loops from
+/// being inlined and vectorised. Same results as glibc's on x86-64 (test
+/// compat_fmin_fmax_bitwise_as_libm_on_specials): the other argument where one is NaN, else the
+/// first argument unless the second is strictly smaller (larger), so x for +0 / -0.
+template <class T> KOKKOS_INLINE_FUNCTION constexpr T fmin(T x, T y) {
+  return (y < x || x != x) ? y : x;
+}
+template <class T> KOKKOS_INLINE_FUNCTION constexpr T fmax(T x, T y) {
+  return (y > x || x != x) ? y : x;
+}
 
 /// \brief Smaller of two values of any ordered type (Kokkos::min is 3.7+ and moved namespaces).
 template <class T> KOKKOS_INLINE_FUNCTION constexpr T min(T a, T b) {

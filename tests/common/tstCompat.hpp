@@ -170,4 +170,33 @@ TEST(TEST_CATEGORY, compat_whole_roots_within_three_ulps) {
   }
 }
 
+TEST(TEST_CATEGORY, compat_fmin_fmax_bitwise_as_libm_on_specials) {
+  // math::fmin / fmax are written out (Compat.hpp); on the host they must give the library's
+  // bits for NaN arguments, infinities and equal values, and on x86-64 also the sign of a zero
+  // from +0 and -0 (glibc returns the first argument; other libraries may choose otherwise,
+  // which IEEE 754 allows). Volatile arguments keep the compiler from folding std::fmin / fmax.
+  const double values[] = {0.0, -0.0, 1.5, -2.25, HUGE_VAL, -HUGE_VAL, std::nan(""), DBL_MIN,
+                           -DBL_TRUE_MIN};
+  int checked = 0;
+  for (const double vx : values) {
+    for (const double vy : values) {
+      volatile double x = vx, y = vy;
+      const double got[2] = {hikiln::math::fmin(vx, vy), hikiln::math::fmax(vx, vy)};
+      const double want[2] = {std::fmin(x, y), std::fmax(x, y)};
+      for (int m = 0; m < 2; ++m) {
+        if (std::isnan(want[m])) {
+          EXPECT_TRUE(std::isnan(got[m])) << vx << " " << vy;
+          continue;
+        }
+        EXPECT_EQ(got[m], want[m]) << m << ": " << vx << " " << vy;
+#if defined(__x86_64__)
+        EXPECT_EQ(std::signbit(got[m]), std::signbit(want[m])) << m << ": " << vx << " " << vy;
+#endif
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 160); // 81 pairs x 2, less fmin and fmax of (NaN, NaN)
+}
+
 } // namespace
