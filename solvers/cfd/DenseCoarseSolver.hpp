@@ -11,7 +11,7 @@
 /// row, so one operator application on the sum of their unit vectors gives all their columns at
 /// once: 9 applications per component in 2D (27 in 3D) instead of one per unknown. Every entry
 /// is the same single stencil term as in a one-column probe, so the matrix is bitwise the same
-/// (test pcg_coloured_coarse_probe_is_bitwise_the_column_probe).
+/// (test_cfd_coarse_probe).
 
 #include "kernels/cfd/FieldOps.hpp"
 #include "solvers/cfd/DenseInverse.hpp"

@@ -983,7 +983,7 @@ private:
   velocity_type _accel;           ///< the incremental projection's carried acceleration (step 4)
   velocity_type _predictorChange; ///< u* less its cold guess, last step (warmMomentumStart)
   field_type _zeroCells;          ///< stays 0: the pressure's cold start (project)
-  std::unique_ptr<ViscousMultigrid<ExecutionSpace>> _momentumMg; ///< momentumMultigrid()
+  std::unique_ptr<ViscousMultigrid<ExecutionSpace>> _momentumMg; ///< keptMultigrid()
   std::unique_ptr<CellMultigrid<ExecutionSpace>> _pressureMg, _heatMg;
   field_type _alpha[3], _rhoFace[3], _beta[3];
   FctWork<memory_space> _fct;

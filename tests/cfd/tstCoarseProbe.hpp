@@ -36,21 +36,21 @@ int differingBits(field const& a, field const& b) {
   return differ;
 }
 
-struct PressureRun {
+struct ProbeRun {
   SolveStats stats;
   field x;
   int probes = 0, unknowns = 0;
 };
 
 // PCG on the cell operator with face coefficients 1 / rho(x) and alpha (may be empty).
-PressureRun pressureSolve(Grid const& g, ScalarBoundaries const& bc, field const& alpha,
-                          field const (&beta)[3], field const& open, bool coloured) {
+ProbeRun pressureSolve(Grid const& g, ScalarBoundaries const& bc, field const& alpha,
+                       field const (&beta)[3], field const& open, bool coloured) {
   const space s{};
   MultigridOptions options;
   options.tolerance = 1e-11;
   options.colouredProbe = coloured;
   CellMultigrid<space> mg(s, g, bc, alpha, beta, options, open);
-  PressureRun run;
+  ProbeRun run;
   run.x = makeField(s, g, Staggering::Cell, "hikiln::test::cfd::x");
   run.stats = mg.solvePcg(run.x, test::randomField(s, g, 7));
   run.probes = mg.coarseProbes();
@@ -58,7 +58,7 @@ PressureRun pressureSolve(Grid const& g, ScalarBoundaries const& bc, field const
   return run;
 }
 
-void expectSameSolve(PressureRun const& coloured, PressureRun const& columns, const char* what) {
+void expectSameSolve(ProbeRun const& coloured, ProbeRun const& columns, const char* what) {
   std::cout << what << ": coarse level " << columns.unknowns << " unknowns, " << columns.probes
             << " probes one column at a time, " << coloured.probes << " coloured; PCG "
             << coloured.stats.iterations << " / " << columns.stats.iterations << " iterations\n";
@@ -90,10 +90,8 @@ TEST(TEST_CATEGORY, coarse_probe_coloured_equals_columns_closed_drum_pressure) {
     hAlpha.data()[q] = capacity.data()[q] > 0.0 ? 0.0 : 1e3;
   }
   Kokkos::deep_copy(alpha, hAlpha);
-  const PressureRun coloured =
-      pressureSolve(g, ScalarBoundaries(), alpha, beta, cut.capacity, true);
-  const PressureRun columns =
-      pressureSolve(g, ScalarBoundaries(), alpha, beta, cut.capacity, false);
+  const ProbeRun coloured = pressureSolve(g, ScalarBoundaries(), alpha, beta, cut.capacity, true);
+  const ProbeRun columns = pressureSolve(g, ScalarBoundaries(), alpha, beta, cut.capacity, false);
   expectSameSolve(coloured, columns, "closed drum pressure, 64^2");
 }
 
@@ -110,8 +108,8 @@ TEST(TEST_CATEGORY, coarse_probe_coloured_equals_columns_periodic_3d_pressure) {
         return 1.0 + 0.5 * std::sin(2 * pi * x) * std::cos(2 * pi * y) * std::cos(pi * z);
       });
     }
-    const PressureRun coloured = pressureSolve(g, bc, field(), beta, field(), true);
-    const PressureRun columns = pressureSolve(g, bc, field(), beta, field(), false);
+    const ProbeRun coloured = pressureSolve(g, bc, field(), beta, field(), true);
+    const ProbeRun columns = pressureSolve(g, bc, field(), beta, field(), false);
     expectSameSolve(coloured, columns,
                     nz == 12 ? "3D pressure, 16 x 16 x 12, periodic z"
                              : "3D pressure, 16 x 16 x 20, periodic z");
@@ -120,8 +118,8 @@ TEST(TEST_CATEGORY, coarse_probe_coloured_equals_columns_periodic_3d_pressure) {
 
 // PCG on the viscous operator with alpha = 30, variable mu and a smooth right-hand side;
 // x = component c of the solution.
-PressureRun viscousSolve(Grid const& g, VelocityBoundaries const& bc, bool coloured, int c,
-                         std::int64_t maxCoarseCells = 64) {
+ProbeRun viscousSolve(Grid const& g, VelocityBoundaries const& bc, bool coloured, int c,
+                      std::int64_t maxCoarseCells = 64) {
   const space s{};
   const int dims = g.is3D() ? 3 : 2;
   field alpha[3];
@@ -142,7 +140,7 @@ PressureRun viscousSolve(Grid const& g, VelocityBoundaries const& bc, bool colou
   options.colouredProbe = coloured;
   options.coarsening.maxCoarseCells = maxCoarseCells;
   ViscousMultigrid<space> mg(s, g, bc, alpha, mu, options);
-  PressureRun run;
+  ProbeRun run;
   run.stats = mg.solvePcg(u, f);
   run.x = u.comp[c];
   run.probes = mg.coarseProbes();

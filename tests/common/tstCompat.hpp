@@ -175,8 +175,8 @@ TEST(TEST_CATEGORY, compat_fmin_fmax_bitwise_as_libm_on_specials) {
   // bits for NaN arguments, infinities and equal values, and on x86-64 also the sign of a zero
   // from +0 and -0 (glibc returns the first argument; other libraries may choose otherwise,
   // which IEEE 754 allows). Volatile arguments keep the compiler from folding std::fmin / fmax.
-  const double values[] = {0.0, -0.0, 1.5, -2.25, HUGE_VAL, -HUGE_VAL, std::nan(""), DBL_MIN,
-                           -DBL_TRUE_MIN};
+  const double values[] = {0.0,       -0.0,         1.5,     -2.25,        HUGE_VAL,
+                           -HUGE_VAL, std::nan(""), DBL_MIN, -DBL_TRUE_MIN};
   int checked = 0;
   for (const double vx : values) {
     for (const double vy : values) {
