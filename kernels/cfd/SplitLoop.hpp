@@ -1,15 +1,18 @@
 #pragma once
 /// \file SplitLoop.hpp
-/// \brief Loops over the cells of a BoxSplit: the interior with the branch-free stencil (on the
-/// host one launch index per (j, k) row walking i, on devices one per cell), the shell with a flat
-/// policy and the boundary closures. A stencil kernel is written once as a body with
+/// \brief Loops over the cells of a BoxSplit: the interior with the branch-free stencil, the shell
+/// with the boundary closures. On the host one launch walks the box's rows (j, k), each row's
+/// shell cells with the closures and its interior cells with the stencil; on devices the interior
+/// is one launch index per cell and the shell a second, flat launch. A stencil kernel is written
+/// once as a body with
 ///
 ///     template <bool Interior> KOKKOS_INLINE_FUNCTION double cell(int i, int j, int k) const;
 ///
 /// (Interior tells the stencil that no closure is needed); forEachSplitCell ignores the returned
-/// value, sumOverSplitCells adds it up (e.g. a squared residual), forEachSplitColourCell visits one
-/// colour of a red-black sweep. Launch order and policies are those a hand-written interior +
-/// shell pair of launches would use, so results are bitwise those of such a pair.
+/// value, sumOverSplitCells adds it up (e.g. a squared residual; interior and shell are separate
+/// reductions there on every backend), forEachSplitColourCell visits one colour of a red-black
+/// sweep. Each cell gets the same arithmetic on every path, and no cell of a launch reads what
+/// another writes, so results do not depend on the path.
 
 #include "kernels/cfd/BoxSplit.hpp"
 #include "kernels/cfd/Grid.hpp"
@@ -62,13 +65,18 @@ template <class Body> struct ShellSum {
   }
 };
 
+/// The first index >= a with (i + j + k) % 2 == colour.
+KOKKOS_INLINE_FUNCTION int firstOfColour(const int a, const int j, const int k, const int colour) {
+  return a + ((colour + a + j + k) & 1);
+}
+
 /// Interior cells of one colour ((i + j + k) % 2 == colour): the x range is walked in pairs so
 /// that no launch index is wasted on the other colour.
 template <class Body> struct InteriorColourCells {
   Body body;
   int i0, i1, colour;
   KOKKOS_INLINE_FUNCTION void operator()(const int pair, const int j, const int k) const {
-    const int i = i0 + 2 * pair + ((colour + i0 + j + k) & 1); // (`half` is a CUDA type)
+    const int i = firstOfColour(i0, j, k, colour) + 2 * pair; // (`half` is a CUDA type)
     if (i < i1) {
       body.template cell<true>(i, j, k);
     }
@@ -87,17 +95,6 @@ struct Rows {
   KOKKOS_INLINE_FUNCTION int k(const int row) const { return k0 + row / nj; }
 };
 
-template <class Body> struct InteriorRows {
-  Body body;
-  Rows rows;
-  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int row) const {
-    const int j = rows.j(row), k = rows.k(row);
-    for (int i = rows.i0; i < rows.i1; ++i) {
-      body.template cell<true>(i, j, k);
-    }
-  }
-};
-
 template <class Body> struct InteriorRowSum {
   using value_type = double;
   Body body;
@@ -106,18 +103,6 @@ template <class Body> struct InteriorRowSum {
     const int j = rows.j(row), k = rows.k(row);
     for (int i = rows.i0; i < rows.i1; ++i) {
       sum += body.template cell<true>(i, j, k);
-    }
-  }
-};
-
-template <class Body> struct InteriorColourRows {
-  Body body;
-  Rows rows;
-  int colour;
-  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int row) const {
-    const int j = rows.j(row), k = rows.k(row);
-    for (int i = rows.i0 + ((colour + rows.i0 + j + k) & 1); i < rows.i1; i += 2) {
-      body.template cell<true>(i, j, k);
     }
   }
 };
@@ -132,6 +117,48 @@ template <class Body> struct ShellColourCells {
     if (((i + j + k) & 1) == colour) {
       body.template cell<false>(i, j, k);
     }
+  }
+};
+
+/// Host: the rows (j, k) of a whole split box in one launch, the shell's cells with the closures
+/// and the interior's with the branch-free stencil. Rows on the shell's y and z slabs are shell
+/// throughout; the others are shell only where x is (their first and last cells when x is split).
+/// One launch instead of an interior and a shell launch: on two threads a launch's fork and join
+/// cost about 3.5 us, and a drum step makes thousands (perf/README.md, "One launch per split box").
+struct SplitRows {
+  Rows box;                         ///< every row of the box
+  int xLo, xHi, yLo, yHi, zLo, zHi; ///< the interior's ranges
+  explicit SplitRows(BoxSplit const& s)
+      : box(s.lo, s.hi), xLo(s.interiorLo[0]), xHi(s.interiorHi[0]), yLo(s.interiorLo[1]),
+        yHi(s.interiorHi[1]), zLo(s.interiorLo[2]), zHi(s.interiorHi[2]) {}
+  KOKKOS_INLINE_FUNCTION bool shellRow(const int j, const int k) const {
+    return j < yLo || j >= yHi || k < zLo || k >= zHi;
+  }
+};
+
+/// One launch's functor (SplitRows): every cell of each row, or (Coloured) those of one colour.
+template <class Body, bool Coloured> struct SplitBoxRows {
+  Body body;
+  SplitRows rows;
+  int colour = 0;
+
+  /// Visits [a, b) of row (j, k) with cell<Interior>.
+  template <bool Interior>
+  KOKKOS_FORCEINLINE_FUNCTION void walk(const int a, const int b, const int j, const int k) const {
+    for (int i = Coloured ? firstOfColour(a, j, k, colour) : a; i < b; i += Coloured ? 2 : 1) {
+      body.template cell<Interior>(i, j, k);
+    }
+  }
+
+  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int row) const {
+    const int j = rows.box.j(row), k = rows.box.k(row);
+    if (rows.shellRow(j, k)) {
+      walk<false>(rows.box.i0, rows.box.i1, j, k);
+      return;
+    }
+    walk<false>(rows.box.i0, rows.xLo, j, k);
+    walk<true>(rows.xLo, rows.xHi, j, k);
+    walk<false>(rows.xHi, rows.box.i1, j, k);
   }
 };
 
@@ -181,16 +208,16 @@ void forEachBoxCell(ExecutionSpace const& space, std::string const& label, int c
 template <class ExecutionSpace, class Body>
 void forEachSplitCell(ExecutionSpace const& space, std::string const& label, BoxSplit const& split,
                       Body const& body) {
-  if (split.interiorSize() > 0) {
-    if constexpr (detail::walksRows<ExecutionSpace>) {
-      Kokkos::parallel_for(label + "::interior",
-                           detail::rowPolicy(space, split.interiorLo, split.interiorHi),
-                           detail::InteriorRows<Body>{body, {split.interiorLo, split.interiorHi}});
-    } else {
-      Kokkos::parallel_for(label + "::interior",
-                           gridPolicy(space, split.interiorLo, split.interiorHi),
-                           detail::InteriorCells<Body>{body});
+  if constexpr (detail::walksRows<ExecutionSpace>) {
+    if (split.interiorSize() > 0) {
+      Kokkos::parallel_for(label, detail::rowPolicy(space, split.lo, split.hi),
+                           detail::SplitBoxRows<Body, false>{body, detail::SplitRows(split)});
+      return;
     }
+  } else if (split.interiorSize() > 0) {
+    Kokkos::parallel_for(label + "::interior",
+                         gridPolicy(space, split.interiorLo, split.interiorHi),
+                         detail::InteriorCells<Body>{body});
   }
   if (split.shellSize() > 0) {
     Kokkos::parallel_for(label + "::shell",
@@ -228,20 +255,20 @@ double sumOverSplitCells(ExecutionSpace const& space, std::string const& label,
 template <class ExecutionSpace, class Body>
 void forEachSplitColourCell(ExecutionSpace const& space, std::string const& label,
                             BoxSplit const& split, int colour, Body const& body) {
-  if (split.interiorSize() > 0) {
-    if constexpr (detail::walksRows<ExecutionSpace>) {
+  if constexpr (detail::walksRows<ExecutionSpace>) {
+    if (split.interiorSize() > 0) {
       Kokkos::parallel_for(
-          label + "::interior", detail::rowPolicy(space, split.interiorLo, split.interiorHi),
-          detail::InteriorColourRows<Body>{body, {split.interiorLo, split.interiorHi}, colour});
-    } else {
-      const int i0 = split.interiorLo[0];
-      const int i1 = split.interiorHi[0];
-      Kokkos::parallel_for(
-          label + "::interior",
-          gridPolicy(space, {0, split.interiorLo[1], split.interiorLo[2]},
-                     {(i1 - i0 + 1) / 2, split.interiorHi[1], split.interiorHi[2]}),
-          detail::InteriorColourCells<Body>{body, i0, i1, colour});
+          label, detail::rowPolicy(space, split.lo, split.hi),
+          detail::SplitBoxRows<Body, true>{body, detail::SplitRows(split), colour});
+      return;
     }
+  } else if (split.interiorSize() > 0) {
+    const int i0 = split.interiorLo[0];
+    const int i1 = split.interiorHi[0];
+    Kokkos::parallel_for(label + "::interior",
+                         gridPolicy(space, {0, split.interiorLo[1], split.interiorLo[2]},
+                                    {(i1 - i0 + 1) / 2, split.interiorHi[1], split.interiorHi[2]}),
+                         detail::InteriorColourCells<Body>{body, i0, i1, colour});
   }
   if (split.shellSize() > 0) {
     Kokkos::parallel_for(label + "::shell",

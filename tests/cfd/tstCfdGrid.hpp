@@ -1,12 +1,14 @@
 // Grid layout, ghost filling, the interior/shell split and the multigrid transfer operators:
 // extents and coordinates; ghosts reproduce linear / periodic / mirrored data exactly; boundary
-// nodes of the MAC velocity; every cell in exactly one of interior and shell; restriction is the
-// scaled transpose of interpolation (<R f, c> 2^d = <f, P c>) and preserves sums; harmonic faces.
+// nodes of the MAC velocity; every cell in exactly one of interior and shell, and the split loops
+// visit it once with that part's stencil; restriction is the scaled transpose of interpolation (<R
+// f, c> 2^d = <f, P c>) and preserves sums; harmonic faces.
 #include "CfdTestUtils.hpp"
 #include "kernels/cfd/BoxSplit.hpp"
 #include "kernels/cfd/CellOperator.hpp"
 #include "kernels/cfd/FieldOps.hpp"
 #include "kernels/cfd/GhostFill.hpp"
+#include "kernels/cfd/SplitLoop.hpp"
 #include "kernels/cfd/Transfer.hpp"
 
 #include <gtest/gtest.h>
@@ -112,38 +114,86 @@ TEST(TEST_CATEGORY, ghost_fill_velocity_sets_boundary_nodes_and_no_slip_ghosts) 
   }
 }
 
-TEST(TEST_CATEGORY, box_split_covers_every_cell_once) {
+// check(lo, hi, split) for boxes in an 8^3 index range, split in 2D and 3D: with and without an
+// interior, odd and even sizes, empty.
+template <class Check> void forEachTestSplit(Check const& check) {
   const int boxes[][6] = {{0, 0, 0, 7, 5, 1}, {1, 0, 0, 8, 6, 1}, {0, 0, 0, 1, 5, 1},
                           {0, 0, 0, 2, 2, 1}, {0, 0, 0, 6, 5, 4}, {1, 0, 0, 4, 3, 2},
-                          {0, 0, 0, 3, 3, 3}, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 0, 4, 4}};
+                          {0, 0, 0, 3, 3, 3}, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 0, 4, 4},
+                          {1, 1, 0, 7, 6, 3}, {1, 2, 1, 8, 8, 8}};
   for (const auto& b : boxes) {
     for (const bool threeD : {false, true}) {
       const int lo[3] = {b[0], b[1], b[2]};
       const int hi[3] = {b[3], b[4], b[5]};
       const bool active[3] = {true, true, threeD};
-      const BoxSplit split = splitBox(lo, hi, active);
-      std::vector<int> count(static_cast<std::size_t>(8 * 8 * 8), 0);
-      for (int k = split.interiorLo[2]; k < split.interiorHi[2]; ++k)
-        for (int j = split.interiorLo[1]; j < split.interiorHi[1]; ++j)
-          for (int i = split.interiorLo[0]; i < split.interiorHi[0]; ++i) {
-            ++count[static_cast<std::size_t>(i + 8 * (j + 8 * k))];
-          }
-      for (std::int64_t sIdx = 0; sIdx < split.shellSize(); ++sIdx) {
-        int i, j, k;
-        split.shellCell(sIdx, i, j, k);
-        ASSERT_TRUE(i >= lo[0] && i < hi[0] && j >= lo[1] && j < hi[1] && k >= lo[2] && k < hi[2]);
-        ++count[static_cast<std::size_t>(i + 8 * (j + 8 * k))];
+      check(lo, hi, splitBox(lo, hi, active));
+    }
+  }
+}
+
+TEST(TEST_CATEGORY, box_split_covers_every_cell_once) {
+  forEachTestSplit([](int const(&lo)[3], int const(&hi)[3], BoxSplit const& split) {
+    std::vector<int> count(static_cast<std::size_t>(8 * 8 * 8), 0);
+    for (int k = split.interiorLo[2]; k < split.interiorHi[2]; ++k)
+      for (int j = split.interiorLo[1]; j < split.interiorHi[1]; ++j)
+        for (int i = split.interiorLo[0]; i < split.interiorHi[0]; ++i) {
+          ++count[static_cast<std::size_t>(i + 8 * (j + 8 * k))];
+        }
+    for (std::int64_t sIdx = 0; sIdx < split.shellSize(); ++sIdx) {
+      int i, j, k;
+      split.shellCell(sIdx, i, j, k);
+      ASSERT_TRUE(i >= lo[0] && i < hi[0] && j >= lo[1] && j < hi[1] && k >= lo[2] && k < hi[2]);
+      ++count[static_cast<std::size_t>(i + 8 * (j + 8 * k))];
+    }
+    for (int k = 0; k < 8; ++k)
+      for (int j = 0; j < 8; ++j)
+        for (int i = 0; i < 8; ++i) {
+          const bool inside =
+              i >= lo[0] && i < hi[0] && j >= lo[1] && j < hi[1] && k >= lo[2] && k < hi[2];
+          EXPECT_EQ(count[static_cast<std::size_t>(i + 8 * (j + 8 * k))], inside ? 1 : 0)
+              << "box " << lo[0] << lo[1] << lo[2] << "-" << hi[0] << hi[1] << hi[2] << " cell "
+              << i << j << k;
+        }
+  });
+}
+
+// Marks each visit of a split loop: 1 for the branch-free interior stencil, 100 for the closures.
+struct VisitMarks {
+  Kokkos::View<int***, space::memory_space> marks;
+  template <bool Interior> KOKKOS_INLINE_FUNCTION double cell(int i, int j, int k) const {
+    marks(i, j, k) += Interior ? 1 : 100;
+    return 0.0;
+  }
+};
+
+// forEachSplitCell and forEachSplitColourCell (on the host one launch over the box's rows) visit
+// each cell of the box once, one colour only where asked, the interior's with cell<true> and the
+// shell's with cell<false>.
+TEST(TEST_CATEGORY, split_loops_visit_each_cell_once_with_its_stencil) {
+  forEachTestSplit([](int const(&lo)[3], int const(&hi)[3], BoxSplit const& split) {
+    for (int colour = -1; colour < 2; ++colour) { // -1: forEachSplitCell
+      const VisitMarks body{Kokkos::View<int***, space::memory_space>("marks", 8, 8, 8)};
+      if (colour < 0) {
+        forEachSplitCell(space{}, "test::splitCells", split, body);
+      } else {
+        forEachSplitColourCell(space{}, "test::splitColourCells", split, colour, body);
       }
+      const auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, body.marks);
       for (int k = 0; k < 8; ++k)
         for (int j = 0; j < 8; ++j)
           for (int i = 0; i < 8; ++i) {
-            const bool inside =
+            const bool inBox =
                 i >= lo[0] && i < hi[0] && j >= lo[1] && j < hi[1] && k >= lo[2] && k < hi[2];
-            EXPECT_EQ(count[static_cast<std::size_t>(i + 8 * (j + 8 * k))], inside ? 1 : 0)
-                << "box " << b[3] << "x" << b[4] << "x" << b[5] << " cell " << i << j << k;
+            const bool interior = i >= split.interiorLo[0] && i < split.interiorHi[0] &&
+                                  j >= split.interiorLo[1] && j < split.interiorHi[1] &&
+                                  k >= split.interiorLo[2] && k < split.interiorHi[2];
+            const bool visited = inBox && (colour < 0 || ((i + j + k) & 1) == colour);
+            EXPECT_EQ(h(i, j, k), visited ? (interior ? 1 : 100) : 0)
+                << "box " << lo[0] << lo[1] << lo[2] << "-" << hi[0] << hi[1] << hi[2] << " colour "
+                << colour << " cell " << i << j << k;
           }
     }
-  }
+  });
 }
 
 // Transfer of a field of staggering s between g and its coarsening by `ratio`.
