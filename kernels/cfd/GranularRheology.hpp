@@ -26,6 +26,7 @@
 
 #include "kernels/cfd/GhostFill.hpp"
 #include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/SplitLoop.hpp"
 #include "kernels/cfd/ViscousOperator.hpp"
 
 #include <Kokkos_Core.hpp>
@@ -88,6 +89,98 @@ struct GranularRheology {
   }
 };
 
+namespace detail {
+
+/// gamma_dot of one cell (strainRateInvariant). Dims is a template argument so that the loops
+/// over axes, edges and sides unroll and the index arrays stay in registers (with a run-time
+/// count the kernel took ~34 ns a cell on two threads, 256 x 256 drum).
+template <int Dims, class MemorySpace> struct StrainRateInvariant {
+  Grid grid;
+  int off[3];
+  Field<MemorySpace> u[3];
+  Field<MemorySpace> open[3]; ///< apertures of the faces of each component, when masked
+  bool masked;
+  Field<MemorySpace> out;
+
+  KOKKOS_INLINE_FUNCTION double at(int c, int const (&p)[3]) const {
+    return u[c](p[0] + off[0], p[1] + off[1], p[2] + off[2]);
+  }
+  // face of component c at p is open (always without apertures)
+  KOKKOS_INLINE_FUNCTION bool isOpen(int c, int const (&p)[3]) const {
+    return !masked || !shellHeldFaceOf<Dims>(open[c], grid, c, p);
+  }
+
+  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int i, const int j, const int k) const {
+    double d[3][3] = {};
+    for (int a = 0; a < Dims; ++a) {
+      int p[3] = {i, j, k};
+      const double low = at(a, p);
+      const bool lowOpen = isOpen(a, p);
+      p[a] += 1;
+      d[a][a] = lowOpen && isOpen(a, p) ? (at(a, p) - low) / grid.spacing(a) : 0.0;
+    }
+    for (int a = 0; a < Dims; ++a) {
+      for (int b = a + 1; b < Dims; ++b) {
+        double sum = 0.0;
+        int edges = 0;
+        for (int sa = 0; sa < 2; ++sa) {
+          for (int sb = 0; sb < 2; ++sb) {
+            // edge at node (i_a + sa, i_b + sb): du_a/dx_b + du_b/dx_a
+            int p[3] = {i, j, k};
+            p[a] += sa;
+            p[b] += sb;
+            const double uaHigh = at(a, p);
+            bool edgeOpen = isOpen(a, p);
+            p[b] -= 1;
+            const double uaLow = at(a, p);
+            edgeOpen = edgeOpen && isOpen(a, p);
+            p[b] += 1;
+            const double ubHigh = at(b, p);
+            edgeOpen = edgeOpen && isOpen(b, p);
+            p[a] -= 1;
+            const double ubLow = at(b, p);
+            edgeOpen = edgeOpen && isOpen(b, p);
+            if (edgeOpen) {
+              sum += (uaHigh - uaLow) / grid.spacing(b) + (ubHigh - ubLow) / grid.spacing(a);
+              ++edges;
+            }
+          }
+        }
+        d[a][b] = d[b][a] = edges > 0 ? 0.5 * sum / edges : 0.0;
+      }
+    }
+    const double trace = d[0][0] + d[1][1] + d[2][2];
+    double dd = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      for (int b = 0; b < 3; ++b) {
+        const double dev = d[a][b] - (a == b ? trace / 3.0 : 0.0);
+        dd += dev * dev;
+      }
+    }
+    out(i + off[0], j + off[1], k + off[2]) = math::sqrt(2.0 * dd);
+  }
+};
+
+template <int Dims, class ExecutionSpace, class MemorySpace>
+void strainRateInvariantOf(ExecutionSpace const& space, Grid const& grid,
+                           VelocityFields<MemorySpace> const& u, Field<MemorySpace> const& out,
+                           VelocityFields<MemorySpace> const& open) {
+  StrainRateInvariant<Dims, MemorySpace> rate;
+  rate.grid = grid;
+  rate.off[0] = rate.off[1] = grid.ghost;
+  rate.off[2] = grid.ghostZ();
+  rate.masked = open.comp[0].extent(0) > 0;
+  for (int c = 0; c < Dims; ++c) {
+    rate.u[c] = u.comp[c];
+    rate.open[c] = open.comp[c];
+  }
+  rate.out = out;
+  forEachBoxCell(space, "hikiln::cfd::strainRateInvariant", {0, 0, 0}, {grid.nx, grid.ny, grid.nz},
+                 rate);
+}
+
+} // namespace detail
+
 /// \brief gamma_dot = sqrt(2 D':D') per cell from MAC velocities whose ghosts are filled: normal
 /// rates from the two faces of the cell, shear rates as the mean of the four cell edges around
 /// it along each pair of axes. D' = D - tr(D) I / 3 is the deviator of the 3D tensor in 2D as
@@ -104,72 +197,11 @@ template <class ExecutionSpace, class MemorySpace>
 void strainRateInvariant(ExecutionSpace const& space, Grid const& grid,
                          VelocityFields<MemorySpace> const& u, Field<MemorySpace> const& out,
                          VelocityFields<MemorySpace> const& open = VelocityFields<MemorySpace>()) {
-  const int dims = grid.is3D() ? 3 : 2;
-  const int off[3] = {grid.ghost, grid.ghost, grid.ghostZ()};
-  const auto u0 = u.comp[0], u1 = u.comp[1], u2 = dims == 3 ? u.comp[2] : u.comp[0];
-  const bool masked = open.comp[0].extent(0) > 0;
-  const auto a0 = open.comp[0], a1 = open.comp[1], a2 = dims == 3 ? open.comp[2] : open.comp[0];
-  Kokkos::parallel_for(
-      "hikiln::cfd::strainRateInvariant", gridPolicy(space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
-      KOKKOS_LAMBDA(const int i, const int j, const int k) {
-        const auto comp = [&](int c) -> Field<MemorySpace> const& {
-          return c == 0 ? u0 : (c == 1 ? u1 : u2);
-        };
-        const auto at = [&](int c, int const(&p)[3]) {
-          return comp(c)(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
-        };
-        // face of component c at p is open (always without apertures)
-        const auto isOpen = [&](int c, int const(&p)[3]) {
-          return !masked || !shellHeldFace(c == 0 ? a0 : (c == 1 ? a1 : a2), grid, c, p);
-        };
-        double d[3][3] = {};
-        for (int a = 0; a < dims; ++a) {
-          int p[3] = {i, j, k};
-          const double low = at(a, p);
-          const bool lowOpen = isOpen(a, p);
-          p[a] += 1;
-          d[a][a] = lowOpen && isOpen(a, p) ? (at(a, p) - low) / grid.spacing(a) : 0.0;
-        }
-        for (int a = 0; a < dims; ++a) {
-          for (int b = a + 1; b < dims; ++b) {
-            double sum = 0.0;
-            int edges = 0;
-            for (int sa = 0; sa < 2; ++sa) {
-              for (int sb = 0; sb < 2; ++sb) {
-                // edge at node (i_a + sa, i_b + sb): du_a/dx_b + du_b/dx_a
-                int p[3] = {i, j, k};
-                p[a] += sa;
-                p[b] += sb;
-                const double uaHigh = at(a, p);
-                bool edgeOpen = isOpen(a, p);
-                p[b] -= 1;
-                const double uaLow = at(a, p);
-                edgeOpen = edgeOpen && isOpen(a, p);
-                p[b] += 1;
-                const double ubHigh = at(b, p);
-                edgeOpen = edgeOpen && isOpen(b, p);
-                p[a] -= 1;
-                const double ubLow = at(b, p);
-                edgeOpen = edgeOpen && isOpen(b, p);
-                if (edgeOpen) {
-                  sum += (uaHigh - uaLow) / grid.spacing(b) + (ubHigh - ubLow) / grid.spacing(a);
-                  ++edges;
-                }
-              }
-            }
-            d[a][b] = d[b][a] = edges > 0 ? 0.5 * sum / edges : 0.0;
-          }
-        }
-        const double trace = d[0][0] + d[1][1] + d[2][2];
-        double dd = 0.0;
-        for (int a = 0; a < 3; ++a) {
-          for (int b = 0; b < 3; ++b) {
-            const double dev = d[a][b] - (a == b ? trace / 3.0 : 0.0);
-            dd += dev * dev;
-          }
-        }
-        out(i + off[0], j + off[1], k + off[2]) = math::sqrt(2.0 * dd);
-      });
+  if (grid.is3D()) {
+    detail::strainRateInvariantOf<3>(space, grid, u, out, open);
+  } else {
+    detail::strainRateInvariantOf<2>(space, grid, u, out, open);
+  }
 }
 
 /// \brief mu = rheology.mixtureViscosity(phi, pBed, gammaDot, wallLayer > 0) per cell.

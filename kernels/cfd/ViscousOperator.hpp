@@ -50,16 +50,23 @@ KOKKOS_INLINE_FUNCTION constexpr Staggering edgeStaggering(int slot) {
 /// \brief True when the face of component c at p (face indices without the ghost offset) lies
 /// in the grid and is closed (aperture <= 0: held at the shell's velocity). Ghost faces, beyond
 /// a side of the grid, hold that side's boundary values and count as open.
-template <class ApertureView>
-KOKKOS_INLINE_FUNCTION bool shellHeldFace(ApertureView const& aperture, Grid const& grid, int c,
-                                          int const (&p)[3]) {
+/// shellHeldFaceOf<Dims> is the same test on a grid of Dims dimensions known at compile time.
+template <int Dims, class ApertureView>
+KOKKOS_INLINE_FUNCTION bool shellHeldFaceOf(ApertureView const& aperture, Grid const& grid, int c,
+                                            int const (&p)[3]) {
   const int n[3] = {grid.nx, grid.ny, grid.nz};
-  for (int e = 0; e < (grid.is3D() ? 3 : 2); ++e) {
+  for (int e = 0; e < Dims; ++e) {
     if (p[e] < 0 || p[e] >= n[e] + (e == c ? 1 : 0)) {
       return false;
     }
   }
   return aperture(p[0] + grid.ghost, p[1] + grid.ghost, p[2] + grid.ghostZ()) <= 0.0;
+}
+template <class ApertureView>
+KOKKOS_INLINE_FUNCTION bool shellHeldFace(ApertureView const& aperture, Grid const& grid, int c,
+                                          int const (&p)[3]) {
+  return grid.is3D() ? shellHeldFaceOf<3>(aperture, grid, c, p)
+                     : shellHeldFaceOf<2>(aperture, grid, c, p);
 }
 
 /// \brief The operator alpha u - div(mu (grad u + grad u^T)) with its boundary closures
