@@ -20,6 +20,7 @@
 #include <Kokkos_Core.hpp>
 
 #include <cstdint>
+#include <type_traits>
 
 namespace hikiln::cfd {
 
@@ -40,13 +41,17 @@ template <class MemorySpace> struct CellOperator {
 /// A (boundary closures folded in), rest the neighbour and (affine) boundary terms. Interior:
 /// (i, j, k) is known to have all its neighbours inside the grid (no closures evaluated).
 /// scale = GridScales(op.grid), computed once per launch.
-template <bool Interior, class MemorySpace, class XView>
-KOKKOS_INLINE_FUNCTION void cellStencil(CellOperator<MemorySpace> const& op,
-                                        GridScales const& scale, XView const& x, int i, int j,
-                                        int k, bool affine, double& diag, double& rest) {
+template <bool Interior, int Dims, bool HasAlpha, class MemorySpace, class XView>
+KOKKOS_FORCEINLINE_FUNCTION void cellStencil(CellOperator<MemorySpace> const& op,
+                                             GridScales const& scale, XView const& x, int i, int j,
+                                             int k, bool affine, double& diag, double& rest) {
   const int g = op.grid.ghost;
-  const int gz = op.grid.ghostZ();
-  diag = op.hasAlpha() ? op.alpha(i + g, j + g, k + gz) : 0.0;
+  const int gz = op.grid.template ghostZOf<Dims>();
+  if constexpr (HasAlpha) {
+    diag = op.alpha(i + g, j + g, k + gz);
+  } else {
+    diag = 0.0;
+  }
   rest = 0.0;
   const double cx = scale.inv2[0];
   {
@@ -68,7 +73,7 @@ KOKKOS_INLINE_FUNCTION void cellStencil(CellOperator<MemorySpace> const& op,
     rest += bu * (up.off * x(i + g, up.index + g, k + gz) + up.lift) +
             bd * (dn.off * x(i + g, dn.index + g, k + gz) + dn.lift);
   }
-  if (op.axis[2].active) {
+  if constexpr (Dims == 3) {
     const double cz = scale.inv2[2];
     const Neighbour up = upOf<Interior>(op.axis[2], k, affine);
     const Neighbour dn = downOf<Interior>(op.axis[2], k, affine);
@@ -90,7 +95,7 @@ template <class MemorySpace> BoxSplit cellSplit(CellOperator<MemorySpace> const&
 namespace detail {
 
 /// The cell stencil at (i, j, k) of op applied to x (a stencil for StencilBodies.hpp).
-template <class MemorySpace> struct CellStencil {
+template <class MemorySpace, int Dims, bool HasAlpha> struct CellStencil {
   using field_type = Field<MemorySpace>;
   CellOperator<MemorySpace> op;
   GridScales scale;
@@ -100,10 +105,28 @@ template <class MemorySpace> struct CellStencil {
   CellStencil(CellOperator<MemorySpace> const& o, field_type const& xIn, bool aff)
       : op(o), scale(o.grid), x(xIn), affine(aff), ghost(o.grid.ghost), ghostZ(o.grid.ghostZ()) {}
   template <bool Interior>
-  KOKKOS_INLINE_FUNCTION void stencil(int i, int j, int k, double& diag, double& rest) const {
-    cellStencil<Interior>(op, scale, x, i, j, k, affine, diag, rest);
+  KOKKOS_FORCEINLINE_FUNCTION void stencil(int i, int j, int k, double& diag, double& rest) const {
+    cellStencil<Interior, Dims, HasAlpha>(op, scale, x, i, j, k, affine, diag, rest);
   }
 };
+
+/// Calls f(dims, hasAlpha) with op's dimension count and alpha term as compile-time constants
+/// (std::integral_constant), so that a launch's stencil has no run-time branch per cell.
+template <class MemorySpace, class F>
+void withCellForm(CellOperator<MemorySpace> const& op, F&& f) {
+  const bool alpha = op.hasAlpha();
+  if (op.grid.is3D()) {
+    alpha ? f(std::integral_constant<int, 3>(), std::true_type())
+          : f(std::integral_constant<int, 3>(), std::false_type());
+  } else {
+    alpha ? f(std::integral_constant<int, 2>(), std::true_type())
+          : f(std::integral_constant<int, 2>(), std::false_type());
+  }
+}
+
+/// The CellStencil type of withCellForm()'s arguments.
+template <class MemorySpace, class D, class A>
+using CellStencilOf = CellStencil<MemorySpace, D::value, A::value>;
 
 } // namespace detail
 
@@ -113,8 +136,11 @@ void applyCellOperator(ExecutionSpace const& space, CellOperator<MemorySpace> co
                        Field<MemorySpace> const& x, Field<MemorySpace> const& y, bool affine) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::applyCellOperator: fields not accessible from the execution space");
-  forEachSplitCell(space, "hikiln::cfd::applyCellOperator", cellSplit(op),
-                   StencilApply<detail::CellStencil<MemorySpace>>{{op, x, affine}, y});
+  detail::withCellForm(op, [&](auto dims, auto alpha) {
+    using Stencil = detail::CellStencilOf<MemorySpace, decltype(dims), decltype(alpha)>;
+    forEachSplitCell(space, "hikiln::cfd::applyCellOperator", cellSplit(op),
+                     StencilApply<Stencil>{{op, x, affine}, y});
+  });
 }
 
 /// \brief r = f - A x on every cell.
@@ -124,8 +150,11 @@ void cellResidual(ExecutionSpace const& space, CellOperator<MemorySpace> const& 
                   Field<MemorySpace> const& r, bool affine) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::cellResidual: fields not accessible from the execution space");
-  forEachSplitCell(space, "hikiln::cfd::cellResidual", cellSplit(op),
-                   StencilResidual<detail::CellStencil<MemorySpace>>{{op, x, affine}, f, r});
+  detail::withCellForm(op, [&](auto dims, auto alpha) {
+    using Stencil = detail::CellStencilOf<MemorySpace, decltype(dims), decltype(alpha)>;
+    forEachSplitCell(space, "hikiln::cfd::cellResidual", cellSplit(op),
+                     StencilResidual<Stencil>{{op, x, affine}, f, r});
+  });
 }
 
 /// \brief r = f - A x on every cell; returns the sum of r^2.
@@ -135,9 +164,13 @@ double cellResidualNorm2(ExecutionSpace const& space, CellOperator<MemorySpace> 
                          Field<MemorySpace> const& r, bool affine) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::cellResidualNorm2: fields not accessible from the execution space");
-  return sumOverSplitCells(
-      space, "hikiln::cfd::cellResidualNorm2", cellSplit(op),
-      StencilResidual<detail::CellStencil<MemorySpace>>{{op, x, affine}, f, r});
+  double sum = 0.0;
+  detail::withCellForm(op, [&](auto dims, auto alpha) {
+    using Stencil = detail::CellStencilOf<MemorySpace, decltype(dims), decltype(alpha)>;
+    sum = sumOverSplitCells(space, "hikiln::cfd::cellResidualNorm2", cellSplit(op),
+                            StencilResidual<Stencil>{{op, x, affine}, f, r});
+  });
+  return sum;
 }
 
 /// \brief One colour of a red-black Gauss-Seidel sweep for A x = f: every cell with
@@ -149,8 +182,11 @@ void smoothCellColour(ExecutionSpace const& space, CellOperator<MemorySpace> con
                       bool affine) {
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::smoothCellColour: fields not accessible from the execution space");
-  forEachSplitColourCell(space, "hikiln::cfd::smoothCellColour", cellSplit(op), colour,
-                         StencilGaussSeidel<detail::CellStencil<MemorySpace>>{{op, x, affine}, f});
+  detail::withCellForm(op, [&](auto dims, auto alpha) {
+    using Stencil = detail::CellStencilOf<MemorySpace, decltype(dims), decltype(alpha)>;
+    forEachSplitColourCell(space, "hikiln::cfd::smoothCellColour", cellSplit(op), colour,
+                           StencilGaussSeidel<Stencil>{{op, x, affine}, f});
+  });
 }
 
 /// \brief Harmonic mean 2 a b / (a + b) of two positive coefficients (0 if both are 0).

@@ -100,12 +100,19 @@ void axpbyUnknowns(ExecutionSpace const& space, UnknownBox const& box, double al
   static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
                 "hikiln::cfd::axpbyUnknowns: fields not accessible from the execution space");
   const GhostOffsets o = box.offsets;
+  if (beta == 0.0) { // y is not read (it may hold anything); two launches keep the rows branch-free
+    forEachBoxCell(
+        space, "hikiln::cfd::axpbyUnknowns", box.lo, box.hi,
+        KOKKOS_LAMBDA(const int i, const int j, const int k) {
+          y(i + o.x, j + o.y, k + o.z) = alpha * x(i + o.x, j + o.y, k + o.z) + 0.0;
+        });
+    return;
+  }
   forEachBoxCell(
       space, "hikiln::cfd::axpbyUnknowns", box.lo, box.hi,
       KOKKOS_LAMBDA(const int i, const int j, const int k) {
         double& target = y(i + o.x, j + o.y, k + o.z);
-        const double old = beta == 0.0 ? 0.0 : beta * target;
-        target = alpha * x(i + o.x, j + o.y, k + o.z) + old;
+        target = alpha * x(i + o.x, j + o.y, k + o.z) + beta * target;
       });
 }
 

@@ -66,6 +66,9 @@ struct Grid {
   KOKKOS_INLINE_FUNCTION int ghostAlong(int axis) const { return axis == 2 && nz == 1 ? 0 : ghost; }
   /// \brief Storage offset of logical index 0 along z (ghost layers below it).
   KOKKOS_INLINE_FUNCTION int ghostZ() const { return nz > 1 ? ghost : 0; }
+  /// \brief ghostZ() of a grid whose dimension count Dims is known at compile time: a constant
+  /// in 2D, so that a stencil's index arithmetic has no select per cell (vectorised rows).
+  template <int Dims> KOKKOS_INLINE_FUNCTION int ghostZOf() const { return Dims == 3 ? ghost : 0; }
   /// \brief Coordinate of logical index i along axis for a field centred as s.
   KOKKOS_INLINE_FUNCTION double coordinate(Staggering s, int axis, int i) const {
     const double origin = axis == 0 ? x0 : (axis == 1 ? y0 : z0);

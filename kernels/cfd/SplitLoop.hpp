@@ -23,6 +23,16 @@
 #include <string>
 #include <type_traits>
 
+/// Before a host row loop over the cells of one launch: they are independent (no cell reads
+/// what another writes, see the file comment), so the compiler may vectorise the row without a
+/// run-time overlap test per array the stencil reads (GCC gives up beyond 10 such tests; the
+/// viscous stencil reads up to 16 arrays). GCC only; nvcc and other compilers get nothing.
+#if defined(__GNUC__) && !defined(__clang__) && !defined(__NVCC__) && !defined(__CUDA_ARCH__)
+#define HIKILN_INDEPENDENT_CELLS _Pragma("GCC ivdep")
+#else
+#define HIKILN_INDEPENDENT_CELLS
+#endif
+
 namespace hikiln::cfd {
 
 namespace detail {
@@ -101,9 +111,12 @@ template <class Body> struct InteriorRowSum {
   Rows rows;
   KOKKOS_FORCEINLINE_FUNCTION void operator()(const int row, double& sum) const {
     const int j = rows.j(row), k = rows.k(row);
+    double partial = sum; // a local: the same additions in the same order, kept in a register
+    HIKILN_INDEPENDENT_CELLS
     for (int i = rows.i0; i < rows.i1; ++i) {
-      sum += body.template cell<true>(i, j, k);
+      partial += body.template cell<true>(i, j, k);
     }
+    sum = partial;
   }
 };
 
@@ -145,6 +158,7 @@ template <class Body, bool Coloured> struct SplitBoxRows {
   /// Visits [a, b) of row (j, k) with cell<Interior>.
   template <bool Interior>
   KOKKOS_FORCEINLINE_FUNCTION void walk(const int a, const int b, const int j, const int k) const {
+    HIKILN_INDEPENDENT_CELLS
     for (int i = Coloured ? firstOfColour(a, j, k, colour) : a; i < b; i += Coloured ? 2 : 1) {
       body.template cell<Interior>(i, j, k);
     }
@@ -180,6 +194,7 @@ template <class F> struct BoxRows {
   Rows rows;
   KOKKOS_INLINE_FUNCTION void operator()(const int row) const {
     const int j = rows.j(row), k = rows.k(row);
+    HIKILN_INDEPENDENT_CELLS
     for (int i = rows.i0; i < rows.i1; ++i) {
       f(i, j, k);
     }

@@ -30,6 +30,7 @@
 #include <Kokkos_Core.hpp>
 
 #include <cstdint>
+#include <type_traits>
 
 namespace hikiln::cfd {
 
@@ -91,14 +92,14 @@ template <class MemorySpace> struct ViscousOperator {
 /// \brief The part of viscousStencil along axis A (a compile-time axis, so that the index
 /// arithmetic and the `A == C` choice fold away; as a loop over the axes GCC kept the axis in a
 /// register and the index arrays on the stack, perf/README.md).
-template <bool Interior, int C, int A, class MemorySpace>
+template <bool Interior, int Dims, bool Masks, int C, int A, class MemorySpace>
 KOKKOS_FORCEINLINE_FUNCTION void
 viscousStencilAxis(ViscousOperator<MemorySpace> const& op, GridScales const& scale,
                    VelocityFields<MemorySpace> const& vel, int i, int j, int k, bool affine,
                    double& diag, double& rest) {
   constexpr int c = C;
   constexpr int a = A;
-  const int off[3] = {op.grid.ghost, op.grid.ghost, op.grid.ghostZ()};
+  const int off[3] = {op.grid.ghost, op.grid.ghost, op.grid.template ghostZOf<Dims>()};
   const int idx[3] = {i, j, k};
   const auto& x = vel.comp[c];
   const AxisClosure& ax = op.axis[c][a];
@@ -139,17 +140,19 @@ viscousStencilAxis(ViscousOperator<MemorySpace> const& op, GridScales const& sca
   }
   const Neighbour up = upOf<Interior>(ax, idx[a], affine);
   const Neighbour dn = downOf<Interior>(ax, idx[a], affine);
-  if constexpr (a == c) {
-    if (op.masksClosedFaces()) {
-      // the normal strain of the cell above (below) reads this face and the one above (below)
-      const auto& open = op.open.comp[c];
-      int q[3] = {i + off[0], j + off[1], k + off[2]};
-      const bool here = open(q[0], q[1], q[2]) > 0.0;
-      q[a] = up.index + off[a];
-      cu = here && open(q[0], q[1], q[2]) > 0.0 ? cu : 0.0;
-      q[a] = dn.index + off[a];
-      cd = here && open(q[0], q[1], q[2]) > 0.0 ? cd : 0.0;
-    }
+  if constexpr (a == c && Masks) {
+    // the normal strain of the cell above (below) reads this face and the one above (below).
+    // The stress is kept by a factor 1 or 0 (exact for the finite cu, cd >= 0) rather than a
+    // select, which GCC turns into branches that stop it vectorising the row.
+    const auto& open = op.open.comp[c];
+    int q[3] = {i + off[0], j + off[1], k + off[2]};
+    const double here = open(q[0], q[1], q[2]) > 0.0 ? 1.0 : 0.0;
+    q[a] = up.index + off[a];
+    const double above = open(q[0], q[1], q[2]) > 0.0 ? 1.0 : 0.0;
+    q[a] = dn.index + off[a];
+    const double below = open(q[0], q[1], q[2]) > 0.0 ? 1.0 : 0.0;
+    cu *= here * above;
+    cd *= here * below;
   }
   const double inv2 = scale.inv2[a];
   cu *= inv2;
@@ -168,19 +171,22 @@ viscousStencilAxis(ViscousOperator<MemorySpace> const& op, GridScales const& sca
 /// a boundary closure or wrap-around (see componentSplit). Forced inline (with the bodies of
 /// StencilBodies.hpp): left to itself, the compiler keeps it out of line in the large solver
 /// translation units, a call per unknown that doubled the cost of a V-cycle.
-template <bool Interior, int Dims, int C, class MemorySpace>
+template <bool Interior, int Dims, int C, bool HasAlpha, bool Masks, class MemorySpace>
 KOKKOS_FORCEINLINE_FUNCTION void
 viscousStencil(ViscousOperator<MemorySpace> const& op, GridScales const& scale,
                VelocityFields<MemorySpace> const& vel, int i, int j, int k, bool affine,
                double& diag, double& rest) {
-  diag =
-      op.hasAlpha() ? op.alpha[C](i + op.grid.ghost, j + op.grid.ghost, k + op.grid.ghostZ()) : 0.0;
+  if constexpr (HasAlpha) {
+    diag = op.alpha[C](i + op.grid.ghost, j + op.grid.ghost, k + op.grid.template ghostZOf<Dims>());
+  } else {
+    diag = 0.0;
+  }
   rest = 0.0;
   // the axes in order, as the sums have always been taken (bitwise the same results)
-  viscousStencilAxis<Interior, C, 0>(op, scale, vel, i, j, k, affine, diag, rest);
-  viscousStencilAxis<Interior, C, 1>(op, scale, vel, i, j, k, affine, diag, rest);
+  viscousStencilAxis<Interior, Dims, Masks, C, 0>(op, scale, vel, i, j, k, affine, diag, rest);
+  viscousStencilAxis<Interior, Dims, Masks, C, 1>(op, scale, vel, i, j, k, affine, diag, rest);
   if constexpr (Dims == 3) {
-    viscousStencilAxis<Interior, C, 2>(op, scale, vel, i, j, k, affine, diag, rest);
+    viscousStencilAxis<Interior, Dims, Masks, C, 2>(op, scale, vel, i, j, k, affine, diag, rest);
   }
 }
 
@@ -196,8 +202,9 @@ BoxSplit componentSplit(ViscousOperator<MemorySpace> const& op, int c) {
 namespace detail {
 
 /// The viscous stencil of component C at (i, j, k) of op applied to u (a stencil for
-/// StencilBodies.hpp; x is u.comp[C], the other components enter the coupling terms).
-template <int Dims, int C, class MemorySpace> struct ViscousStencil {
+/// StencilBodies.hpp; x is u.comp[C], the other components enter the coupling terms). HasAlpha
+/// and Masks are op.hasAlpha() and op.masksClosedFaces() (withViscousForm()).
+template <int Dims, int C, bool HasAlpha, bool Masks, class MemorySpace> struct ViscousStencil {
   using field_type = Field<MemorySpace>;
   ViscousOperator<MemorySpace> op;
   GridScales scale;
@@ -211,18 +218,37 @@ template <int Dims, int C, class MemorySpace> struct ViscousStencil {
         ghostZ(o.grid.ghostZ()) {}
   template <bool Interior>
   KOKKOS_FORCEINLINE_FUNCTION void stencil(int i, int j, int k, double& diag, double& rest) const {
-    viscousStencil<Interior, Dims, C>(op, scale, u, i, j, k, affine, diag, rest);
+    viscousStencil<Interior, Dims, C, HasAlpha, Masks>(op, scale, u, i, j, k, affine, diag, rest);
   }
 };
+
+/// Calls f(hasAlpha, masks) with op.hasAlpha() and op.masksClosedFaces() as compile-time
+/// constants (std::bool_constant): a launch's stencil then has no run-time branch per unknown,
+/// which lets the compiler vectorise its interior rows.
+template <class MemorySpace, class F>
+void withViscousForm(ViscousOperator<MemorySpace> const& op, F&& f) {
+  const bool alpha = op.hasAlpha(), masks = op.masksClosedFaces();
+  if (alpha) {
+    masks ? f(std::true_type(), std::true_type()) : f(std::true_type(), std::false_type());
+  } else {
+    masks ? f(std::false_type(), std::true_type()) : f(std::false_type(), std::false_type());
+  }
+}
+
+/// The ViscousStencil type of withViscousForm()'s arguments.
+template <int Dims, int C, class MemorySpace, class A, class M>
+using ViscousStencilOf = ViscousStencil<Dims, C, A::value, M::value, MemorySpace>;
 
 /// \brief out_C = (A u)_C (see applyViscousOperator).
 template <int Dims, int C, class ExecutionSpace, class MemorySpace>
 void applyViscousComponent(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
                            VelocityFields<MemorySpace> const& u,
                            VelocityFields<MemorySpace> const& out, bool affine) {
-  forEachSplitCell(
-      space, "hikiln::cfd::applyViscousOperator", componentSplit(op, C),
-      StencilApply<ViscousStencil<Dims, C, MemorySpace>>{{op, u, affine}, out.comp[C]});
+  withViscousForm(op, [&](auto alpha, auto masks) {
+    using Stencil = ViscousStencilOf<Dims, C, MemorySpace, decltype(alpha), decltype(masks)>;
+    forEachSplitCell(space, "hikiln::cfd::applyViscousOperator", componentSplit(op, C),
+                     StencilApply<Stencil>{{op, u, affine}, out.comp[C]});
+  });
 }
 
 /// \brief r_C = f_C - (A u)_C; returns the sum of r_C^2 (see viscousResidual).
@@ -231,9 +257,13 @@ double viscousResidualComponent(ExecutionSpace const& space, ViscousOperator<Mem
                                 VelocityFields<MemorySpace> const& u,
                                 VelocityFields<MemorySpace> const& f,
                                 VelocityFields<MemorySpace> const& r, bool affine) {
-  return sumOverSplitCells(
-      space, "hikiln::cfd::viscousResidual", componentSplit(op, C),
-      StencilResidual<ViscousStencil<Dims, C, MemorySpace>>{{op, u, affine}, f.comp[C], r.comp[C]});
+  double sum = 0.0;
+  withViscousForm(op, [&](auto alpha, auto masks) {
+    using Stencil = ViscousStencilOf<Dims, C, MemorySpace, decltype(alpha), decltype(masks)>;
+    sum = sumOverSplitCells(space, "hikiln::cfd::viscousResidual", componentSplit(op, C),
+                            StencilResidual<Stencil>{{op, u, affine}, f.comp[C], r.comp[C]});
+  });
+  return sum;
 }
 
 /// \brief One colour of the red-black sweep over component C (see smoothViscousColour).
@@ -241,9 +271,11 @@ template <int Dims, int C, class ExecutionSpace, class MemorySpace>
 void smoothViscousComponent(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
                             VelocityFields<MemorySpace> const& u,
                             VelocityFields<MemorySpace> const& f, int colour, bool affine) {
-  forEachSplitColourCell(
-      space, "hikiln::cfd::smoothViscousColour", componentSplit(op, C), colour,
-      StencilGaussSeidel<ViscousStencil<Dims, C, MemorySpace>>{{op, u, affine}, f.comp[C]});
+  withViscousForm(op, [&](auto alpha, auto masks) {
+    using Stencil = ViscousStencilOf<Dims, C, MemorySpace, decltype(alpha), decltype(masks)>;
+    forEachSplitColourCell(space, "hikiln::cfd::smoothViscousColour", componentSplit(op, C), colour,
+                           StencilGaussSeidel<Stencil>{{op, u, affine}, f.comp[C]});
+  });
 }
 
 } // namespace detail

@@ -5,7 +5,11 @@
 //   shell does not pull on the fluid through the viscous stencil), whereas the operator without
 //   the mask does change there (so the check can fail);
 // - the strain rate with the same apertures is blind to closed faces as well (every cell).
+// And on host spaces, where each launch walks rows that the compiler vectorises (SplitLoop.hpp),
+// the viscous and the cell operator's apply, residual and red-black sweeps give bitwise the values
+// of their stencils evaluated one unknown at a time through the boundary closures.
 #include "CfdTestUtils.hpp"
+#include "kernels/cfd/CellOperator.hpp"
 #include "kernels/cfd/GranularRheology.hpp"
 #include "kernels/cfd/ShellGeometry.hpp"
 #include "kernels/cfd/ViscousOperator.hpp"
@@ -14,7 +18,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <iostream>
+#include <string>
+#include <type_traits>
 
 namespace {
 
@@ -224,6 +231,232 @@ void checkStrainRate(bool threeD) {
             << plain << " (unmasked)\n";
   EXPECT_EQ(masked, 0.0);
   EXPECT_GT(plain, 1e-2);
+}
+
+// Whether two fields hold bitwise the same values.
+bool sameBits(field const& a, field const& b) {
+  const auto ha = test::toHost(a);
+  const auto hb = test::toHost(b);
+  return ha.span() == hb.span() &&
+         std::memcmp(ha.data(), hb.data(), ha.span() * sizeof(double)) == 0;
+}
+
+field copyOf(field const& a) {
+  field b(std::string(a.label()) + "_copy", a.layout());
+  Kokkos::deep_copy(b, a);
+  return b;
+}
+
+// Calls body.cell<false>(i, j, k) (the closures' path, one unknown at a time) on the unknowns of
+// split of the given colour (-1: all) and returns the sum of what it returns.
+template <class Body> double cellByCell(BoxSplit const& split, Body const& body, int colour) {
+  double sum = 0.0;
+  for (int k = split.lo[2]; k < split.hi[2]; ++k)
+    for (int j = split.lo[1]; j < split.hi[1]; ++j)
+      for (int i = split.lo[0]; i < split.hi[0]; ++i)
+        if (colour < 0 || ((i + j + k) & 1) == colour) {
+          sum += body.template cell<false>(i, j, k);
+        }
+  return sum;
+}
+
+// The viscous operator's component C of form (Dims, alpha A, masks M), one unknown at a time:
+// out = A u (mode 0), out = f - A u (mode 1, returns its squared norm) or a sweep of colour
+// mode - 2 on u.
+template <int Dims, int C, bool A, bool M>
+double viscousByUnknown(ViscousOperator<memory> const& op, velocity const& u, velocity const& f,
+                        field const& out, bool affine, int mode) {
+  using Stencil = detail::ViscousStencil<Dims, C, A, M, memory>;
+  const BoxSplit split = componentSplit(op, C);
+  if (mode == 0) {
+    return cellByCell(split, StencilApply<Stencil>{{op, u, affine}, out}, -1);
+  }
+  if (mode == 1) {
+    return cellByCell(split, StencilResidual<Stencil>{{op, u, affine}, f.comp[C], out}, -1);
+  }
+  return cellByCell(split, StencilGaussSeidel<Stencil>{{op, u, affine}, f.comp[C]}, mode - 2);
+}
+
+template <int Dims, bool A, bool M>
+double viscousByUnknown(ViscousOperator<memory> const& op, int comp, velocity const& u,
+                        velocity const& f, field const& out, bool affine, int mode) {
+  if (comp == 0) {
+    return viscousByUnknown<Dims, 0, A, M>(op, u, f, out, affine, mode);
+  }
+  if constexpr (Dims == 3) {
+    if (comp == 2) {
+      return viscousByUnknown<Dims, 2, A, M>(op, u, f, out, affine, mode);
+    }
+  }
+  return viscousByUnknown<Dims, 1, A, M>(op, u, f, out, affine, mode);
+}
+
+velocity zeros(Case const& c) {
+  velocity v;
+  for (int comp = 0; comp < c.dims; ++comp) {
+    v.comp[comp] = makeField(space{}, c.grid, faceStaggering(comp), "hikiln::test::zeros");
+  }
+  return v;
+}
+
+velocity copyOf(Case const& c, velocity const& v) {
+  velocity out;
+  for (int comp = 0; comp < c.dims; ++comp) {
+    out.comp[comp] = copyOf(v.comp[comp]);
+  }
+  return out;
+}
+
+// On host spaces: the row launches of the viscous operator (apply, residual, both colours of
+// each component's sweep) against viscousByUnknown(), bitwise (the squared norm to round-off:
+// its sum runs in another order).
+template <class Space, int Dims> void checkViscousRows(Case const& c, bool withAlpha, bool masked) {
+  if constexpr (detail::walksRows<Space>) {
+    auto op = makeOperator(c, masked);
+    for (int comp = 0; withAlpha && comp < Dims; ++comp) {
+      op.alpha[comp] =
+          test::fieldFrom(Space{}, c.grid, faceStaggering(comp), [](double x, double y, double z) {
+            return 40.0 + 30.0 * std::sin(9.0 * x - 4.0 * y + z);
+          });
+    }
+    const velocity u = randomVelocity(c, 5, false), f = randomVelocity(c, 17, false);
+    // mode 0: apply into out, 1: residual into out (returns its squared norm), 2 + colour: sweep x
+    const auto byUnknown = [&](int comp, velocity const& x, field const& out, bool affine,
+                               int mode) {
+      double sum = 0.0;
+      detail::withViscousForm(op, [&](auto a, auto m) {
+        sum = viscousByUnknown<Dims, decltype(a)::value, decltype(m)::value>(op, comp, x, f, out,
+                                                                             affine, mode);
+      });
+      return sum;
+    };
+    for (bool affine : {false, true}) {
+      const velocity applied = zeros(c), appliedByUnknown = zeros(c);
+      const velocity residual = zeros(c), residualByUnknown = zeros(c);
+      applyViscousOperator(Space{}, op, u, applied, affine);
+      const double norm2 = viscousResidual(Space{}, op, u, f, residual, affine);
+      double reference = 0.0;
+      for (int comp = 0; comp < Dims; ++comp) {
+        byUnknown(comp, u, appliedByUnknown.comp[comp], affine, 0);
+        reference += byUnknown(comp, u, residualByUnknown.comp[comp], affine, 1);
+        EXPECT_TRUE(sameBits(applied.comp[comp], appliedByUnknown.comp[comp]))
+            << "apply, component " << comp << ", affine " << affine;
+        EXPECT_TRUE(sameBits(residual.comp[comp], residualByUnknown.comp[comp]))
+            << "residual, component " << comp << ", affine " << affine;
+        for (int colour = 0; colour < 2; ++colour) {
+          const velocity swept = copyOf(c, u), sweptByUnknown = copyOf(c, u);
+          smoothViscousColour(Space{}, op, swept, f, comp, colour, affine);
+          byUnknown(comp, sweptByUnknown, field(), affine, 2 + colour);
+          EXPECT_TRUE(sameBits(swept.comp[comp], sweptByUnknown.comp[comp]))
+              << "sweep, component " << comp << ", colour " << colour << ", affine " << affine;
+        }
+      }
+      EXPECT_GT(reference, 0.0);
+      EXPECT_NEAR(norm2, reference, 1e-13 * reference);
+    }
+  } else {
+    (void)c, (void)withAlpha, (void)masked;
+    GTEST_SKIP() << "rows are walked on host spaces only";
+  }
+}
+
+TEST(TEST_CATEGORY, viscous_rows_equal_stencil_by_unknown) {
+  for (bool threeD : {false, true}) {
+    const Case c = drumCase(threeD);
+    for (bool withAlpha : {false, true}) {
+      for (bool masked : {false, true}) {
+        SCOPED_TRACE((threeD ? std::string("3D") : std::string("2D")) + " alpha " +
+                     std::to_string(withAlpha) + " masked " + std::to_string(masked));
+        if (threeD) {
+          checkViscousRows<space, 3>(c, withAlpha, masked);
+        } else {
+          checkViscousRows<space, 2>(c, withAlpha, masked);
+        }
+      }
+    }
+  }
+}
+
+// The cell operator (pressure / diffusion) of form (Dims, alpha): rows against unknowns, as
+// checkViscousRows().
+template <int Dims, bool A>
+double cellByUnknown(CellOperator<memory> const& op, field const& x, field const& f,
+                     field const& out, bool affine, int mode) {
+  using Stencil = detail::CellStencil<memory, Dims, A>;
+  const BoxSplit split = cellSplit(op);
+  if (mode == 0) {
+    return cellByCell(split, StencilApply<Stencil>{{op, x, affine}, out}, -1);
+  }
+  if (mode == 1) {
+    return cellByCell(split, StencilResidual<Stencil>{{op, x, affine}, f, out}, -1);
+  }
+  return cellByCell(split, StencilGaussSeidel<Stencil>{{op, x, affine}, f}, mode - 2);
+}
+
+template <class Space, int Dims> void checkCellRows(Case const& c, bool withAlpha) {
+  if constexpr (detail::walksRows<Space>) {
+    CellOperator<memory> op;
+    op.grid = c.grid;
+    scalarClosures(c.grid, ScalarBoundaries(), op.axis);
+    for (int a = 0; a < Dims; ++a) {
+      op.beta[a] =
+          test::fieldFrom(Space{}, c.grid, faceStaggering(a), [a](double x, double y, double z) {
+            return 1.2 + std::cos(5.0 * x + 3.0 * a - 2.0 * y + z);
+          });
+    }
+    if (withAlpha) {
+      op.alpha = test::fieldFrom(Space{}, c.grid, Staggering::Cell,
+                                 [](double x, double y, double) { return 3.0 + x * y; });
+    }
+    const auto rough = [](double x, double y, double z) {
+      return std::sin(11.0 * x + 2.0) * std::cos(7.0 * y - z);
+    };
+    const field x = test::fieldFrom(Space{}, c.grid, Staggering::Cell, rough);
+    const field f = test::fieldFrom(Space{}, c.grid, Staggering::Cell,
+                                    [](double px, double py, double) { return px - 2.0 * py; });
+    const auto byUnknown = [&](field const& xIn, field const& out, bool affine, int mode) {
+      double sum = 0.0;
+      detail::withCellForm(op, [&](auto, auto a) {
+        sum = cellByUnknown<Dims, decltype(a)::value>(op, xIn, f, out, affine, mode);
+      });
+      return sum;
+    };
+    for (bool affine : {false, true}) {
+      const field rows = copyOf(f), cells = copyOf(f);
+      applyCellOperator(Space{}, op, x, rows, affine);
+      byUnknown(x, cells, affine, 0);
+      EXPECT_TRUE(sameBits(rows, cells)) << "apply, affine " << affine;
+      const double norm2 = cellResidualNorm2(Space{}, op, x, f, rows, affine);
+      const double reference = byUnknown(x, cells, affine, 1);
+      EXPECT_TRUE(sameBits(rows, cells)) << "residual, affine " << affine;
+      EXPECT_GT(reference, 0.0);
+      EXPECT_NEAR(norm2, reference, 1e-13 * reference);
+      for (int colour = 0; colour < 2; ++colour) {
+        const field swept = copyOf(x), sweptByUnknown = copyOf(x);
+        smoothCellColour(Space{}, op, swept, f, colour, affine);
+        byUnknown(sweptByUnknown, field(), affine, 2 + colour);
+        EXPECT_TRUE(sameBits(swept, sweptByUnknown)) << "sweep, colour " << colour;
+      }
+    }
+  } else {
+    (void)c, (void)withAlpha;
+    GTEST_SKIP() << "rows are walked on host spaces only";
+  }
+}
+
+TEST(TEST_CATEGORY, cell_operator_rows_equal_stencil_by_unknown) {
+  for (bool threeD : {false, true}) {
+    const Case c = drumCase(threeD);
+    for (bool withAlpha : {false, true}) {
+      SCOPED_TRACE((threeD ? std::string("3D") : std::string("2D")) + " alpha " +
+                   std::to_string(withAlpha));
+      if (threeD) {
+        checkCellRows<space, 3>(c, withAlpha);
+      } else {
+        checkCellRows<space, 2>(c, withAlpha);
+      }
+    }
+  }
 }
 
 TEST(TEST_CATEGORY, strain_rate_closed_faces_2d) {
