@@ -104,6 +104,7 @@ void axpbyUnknowns(ExecutionSpace const& space, UnknownBox const& box, double al
     forEachBoxCell(
         space, "hikiln::cfd::axpbyUnknowns", box.lo, box.hi,
         KOKKOS_LAMBDA(const int i, const int j, const int k) {
+          // + 0.0 as the one-launch form added it: -0.0 stays +0.0, the same bits as before
           y(i + o.x, j + o.y, k + o.z) = alpha * x(i + o.x, j + o.y, k + o.z) + 0.0;
         });
     return;
