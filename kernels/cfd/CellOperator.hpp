@@ -60,8 +60,8 @@ KOKKOS_FORCEINLINE_FUNCTION void cellStencil(CellOperator<MemorySpace> const& op
     const double bu = cx * op.beta[0](i + 1 + g, j + g, k + gz);
     const double bd = cx * op.beta[0](i + g, j + g, k + gz);
     diag += bu * up.diag + bd * dn.diag;
-    rest += bu * (up.off * x(up.index + g, j + g, k + gz) + up.lift) +
-            bd * (dn.off * x(dn.index + g, j + g, k + gz) + dn.lift);
+    rest += bu * neighbourValue<Interior>(up, x(up.index + g, j + g, k + gz)) +
+            bd * neighbourValue<Interior>(dn, x(dn.index + g, j + g, k + gz));
   }
   const double cy = scale.inv2[1];
   {
@@ -70,8 +70,8 @@ KOKKOS_FORCEINLINE_FUNCTION void cellStencil(CellOperator<MemorySpace> const& op
     const double bu = cy * op.beta[1](i + g, j + 1 + g, k + gz);
     const double bd = cy * op.beta[1](i + g, j + g, k + gz);
     diag += bu * up.diag + bd * dn.diag;
-    rest += bu * (up.off * x(i + g, up.index + g, k + gz) + up.lift) +
-            bd * (dn.off * x(i + g, dn.index + g, k + gz) + dn.lift);
+    rest += bu * neighbourValue<Interior>(up, x(i + g, up.index + g, k + gz)) +
+            bd * neighbourValue<Interior>(dn, x(i + g, dn.index + g, k + gz));
   }
   if constexpr (Dims == 3) {
     const double cz = scale.inv2[2];
@@ -80,8 +80,8 @@ KOKKOS_FORCEINLINE_FUNCTION void cellStencil(CellOperator<MemorySpace> const& op
     const double bu = cz * op.beta[2](i + g, j + g, k + 1 + gz);
     const double bd = cz * op.beta[2](i + g, j + g, k + gz);
     diag += bu * up.diag + bd * dn.diag;
-    rest += bu * (up.off * x(i + g, j + g, up.index + gz) + up.lift) +
-            bd * (dn.off * x(i + g, j + g, dn.index + gz) + dn.lift);
+    rest += bu * neighbourValue<Interior>(up, x(i + g, j + g, up.index + gz)) +
+            bd * neighbourValue<Interior>(dn, x(i + g, j + g, dn.index + gz));
   }
 }
 

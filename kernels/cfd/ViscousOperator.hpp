@@ -160,9 +160,9 @@ viscousStencilAxis(ViscousOperator<MemorySpace> const& op, GridScales const& sca
   diag += cu * up.diag + cd * dn.diag;
   int q[3] = {i, j, k};
   q[a] = up.index;
-  rest += cu * (up.off * x(q[0] + off[0], q[1] + off[1], q[2] + off[2]) + up.lift);
+  rest += cu * neighbourValue<Interior>(up, x(q[0] + off[0], q[1] + off[1], q[2] + off[2]));
   q[a] = dn.index;
-  rest += cd * (dn.off * x(q[0] + off[0], q[1] + off[1], q[2] + off[2]) + dn.lift);
+  rest += cd * neighbourValue<Interior>(dn, x(q[0] + off[0], q[1] + off[1], q[2] + off[2]));
 }
 
 /// \brief Splits (A u)_C at unknown (i, j, k) of component C (Dims axes) into diag * u_c(i, j, k) -
