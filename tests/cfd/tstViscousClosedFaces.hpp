@@ -7,7 +7,8 @@
 // - the strain rate with the same apertures is blind to closed faces as well (every cell).
 // And on host spaces, where each launch walks rows that the compiler vectorises (SplitLoop.hpp),
 // the viscous and the cell operator's apply, residual and red-black sweeps give bitwise the values
-// of their stencils evaluated one unknown at a time through the boundary closures.
+// of their stencils evaluated one unknown at a time through the boundary closures (with -0.0
+// among the inputs).
 #include "CfdTestUtils.hpp"
 #include "kernels/cfd/CellOperator.hpp"
 #include "kernels/cfd/GranularRheology.hpp"
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <iostream>
 #include <string>
@@ -241,6 +243,20 @@ bool sameBits(field const& a, field const& b) {
          std::memcmp(ha.data(), hb.data(), ha.span() * sizeof(double)) == 0;
 }
 
+// Sets the first half of a's stored values (ghosts included) and every third of the rest to
+// -0.0. The interior rows take a neighbour's value as x and the closures as 1.0 * x + 0.0, which
+// differ on -0.0 alone (neighbourValue(), AxisClosure.hpp); where all of a cell's neighbours are
+// -0.0 only the sums' +0.0 start keeps the rows on the closures' bits.
+void sprinkleNegativeZeros(field const& a) {
+  auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), a);
+  for (std::size_t n = 0; n < h.span(); ++n) {
+    if (n < h.span() / 2 || n % 3 == 0) {
+      h.data()[n] = -0.0;
+    }
+  }
+  Kokkos::deep_copy(a, h);
+}
+
 field copyOf(field const& a) {
   field b(std::string(a.label()) + "_copy", a.layout());
   Kokkos::deep_copy(b, a);
@@ -320,6 +336,9 @@ template <class Space, int Dims> void checkViscousRows(Case const& c, bool withA
           });
     }
     const velocity u = randomVelocity(c, 5, false), f = randomVelocity(c, 17, false);
+    for (int comp = 0; comp < Dims; ++comp) {
+      sprinkleNegativeZeros(u.comp[comp]);
+    }
     // mode 0: apply into out, 1: residual into out (returns its squared norm), 2 + colour: sweep x
     const auto byUnknown = [&](int comp, velocity const& x, field const& out, bool affine,
                                int mode) {
@@ -412,6 +431,7 @@ template <class Space, int Dims> void checkCellRows(Case const& c, bool withAlph
       return std::sin(11.0 * x + 2.0) * std::cos(7.0 * y - z);
     };
     const field x = test::fieldFrom(Space{}, c.grid, Staggering::Cell, rough);
+    sprinkleNegativeZeros(x);
     const field f = test::fieldFrom(Space{}, c.grid, Staggering::Cell,
                                     [](double px, double py, double) { return px - 2.0 * py; });
     const auto byUnknown = [&](field const& xIn, field const& out, bool affine, int mode) {
