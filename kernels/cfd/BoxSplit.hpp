@@ -13,6 +13,20 @@
 
 namespace hikiln::cfd {
 
+/// \brief The axes along which a cell lies in a split's interior, as bits (1 << axis): a stencil
+/// reads its neighbours along those axes without closures or wrap-around. The stencil bodies'
+/// template argument (cell<Axes>(), SplitLoop.hpp); along the other axes they take the closures,
+/// which are right everywhere, so a mask may leave out axes, never add one.
+inline constexpr unsigned noAxes = 0u;  ///< every read through the closures
+inline constexpr unsigned xAxis = 1u;   ///< a row's middle on a y or z shell slab
+inline constexpr unsigned yzAxes = 6u;  ///< the first and last cells of an interior row
+inline constexpr unsigned allAxes = 7u; ///< the interior
+
+/// \brief True when the mask `axes` holds axis a.
+KOKKOS_INLINE_FUNCTION constexpr bool interiorAlong(unsigned axes, int a) {
+  return ((axes >> a) & 1u) != 0u;
+}
+
 /// \brief A box [lo, hi), its interior [lo + 1, hi - 1) along active axes (full along inactive
 /// ones) and the shell between them as slabs.
 struct BoxSplit {

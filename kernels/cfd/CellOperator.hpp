@@ -38,10 +38,11 @@ template <class MemorySpace> struct CellOperator {
 };
 
 /// \brief Splits A x at cell (i, j, k) into diag * x(i, j, k) - rest: diag is the diagonal of
-/// A (boundary closures folded in), rest the neighbour and (affine) boundary terms. Interior:
-/// (i, j, k) is known to have all its neighbours inside the grid (no closures evaluated).
+/// A (boundary closures folded in), rest the neighbour and (affine) boundary terms. Axes: the
+/// axes along which (i, j, k) is known to have its neighbours inside the grid (no closures
+/// evaluated there; BoxSplit.hpp).
 /// scale = GridScales(op.grid), computed once per launch.
-template <bool Interior, int Dims, bool HasAlpha, class MemorySpace, class XView>
+template <unsigned Axes, int Dims, bool HasAlpha, class MemorySpace, class XView>
 KOKKOS_FORCEINLINE_FUNCTION void cellStencil(CellOperator<MemorySpace> const& op,
                                              GridScales const& scale, XView const& x, int i, int j,
                                              int k, bool affine, double& diag, double& rest) {
@@ -55,33 +56,36 @@ KOKKOS_FORCEINLINE_FUNCTION void cellStencil(CellOperator<MemorySpace> const& op
   rest = 0.0;
   const double cx = scale.inv2[0];
   {
-    const Neighbour up = upOf<Interior>(op.axis[0], i, affine);
-    const Neighbour dn = downOf<Interior>(op.axis[0], i, affine);
+    constexpr bool inside = interiorAlong(Axes, 0);
+    const Neighbour up = upOf<inside>(op.axis[0], i, affine);
+    const Neighbour dn = downOf<inside>(op.axis[0], i, affine);
     const double bu = cx * op.beta[0](i + 1 + g, j + g, k + gz);
     const double bd = cx * op.beta[0](i + g, j + g, k + gz);
     diag += bu * up.diag + bd * dn.diag;
-    rest += bu * neighbourValue<Interior>(up, x(up.index + g, j + g, k + gz)) +
-            bd * neighbourValue<Interior>(dn, x(dn.index + g, j + g, k + gz));
+    rest += bu * neighbourValue<inside>(up, x(up.index + g, j + g, k + gz)) +
+            bd * neighbourValue<inside>(dn, x(dn.index + g, j + g, k + gz));
   }
   const double cy = scale.inv2[1];
   {
-    const Neighbour up = upOf<Interior>(op.axis[1], j, affine);
-    const Neighbour dn = downOf<Interior>(op.axis[1], j, affine);
+    constexpr bool inside = interiorAlong(Axes, 1);
+    const Neighbour up = upOf<inside>(op.axis[1], j, affine);
+    const Neighbour dn = downOf<inside>(op.axis[1], j, affine);
     const double bu = cy * op.beta[1](i + g, j + 1 + g, k + gz);
     const double bd = cy * op.beta[1](i + g, j + g, k + gz);
     diag += bu * up.diag + bd * dn.diag;
-    rest += bu * neighbourValue<Interior>(up, x(i + g, up.index + g, k + gz)) +
-            bd * neighbourValue<Interior>(dn, x(i + g, dn.index + g, k + gz));
+    rest += bu * neighbourValue<inside>(up, x(i + g, up.index + g, k + gz)) +
+            bd * neighbourValue<inside>(dn, x(i + g, dn.index + g, k + gz));
   }
   if constexpr (Dims == 3) {
     const double cz = scale.inv2[2];
-    const Neighbour up = upOf<Interior>(op.axis[2], k, affine);
-    const Neighbour dn = downOf<Interior>(op.axis[2], k, affine);
+    constexpr bool inside = interiorAlong(Axes, 2);
+    const Neighbour up = upOf<inside>(op.axis[2], k, affine);
+    const Neighbour dn = downOf<inside>(op.axis[2], k, affine);
     const double bu = cz * op.beta[2](i + g, j + g, k + 1 + gz);
     const double bd = cz * op.beta[2](i + g, j + g, k + gz);
     diag += bu * up.diag + bd * dn.diag;
-    rest += bu * neighbourValue<Interior>(up, x(i + g, j + g, up.index + gz)) +
-            bd * neighbourValue<Interior>(dn, x(i + g, j + g, dn.index + gz));
+    rest += bu * neighbourValue<inside>(up, x(i + g, j + g, up.index + gz)) +
+            bd * neighbourValue<inside>(dn, x(i + g, j + g, dn.index + gz));
   }
 }
 
@@ -104,9 +108,9 @@ template <class MemorySpace, int Dims, bool HasAlpha> struct CellStencil {
   int ghost, ghostZ;
   CellStencil(CellOperator<MemorySpace> const& o, field_type const& xIn, bool aff)
       : op(o), scale(o.grid), x(xIn), affine(aff), ghost(o.grid.ghost), ghostZ(o.grid.ghostZ()) {}
-  template <bool Interior>
+  template <unsigned Axes>
   KOKKOS_FORCEINLINE_FUNCTION void stencil(int i, int j, int k, double& diag, double& rest) const {
-    cellStencil<Interior, Dims, HasAlpha>(op, scale, x, i, j, k, affine, diag, rest);
+    cellStencil<Axes, Dims, HasAlpha>(op, scale, x, i, j, k, affine, diag, rest);
   }
 };
 

@@ -5,7 +5,7 @@
 /// of one unknown (x = (f + rest) / diag). The stencil S provides
 ///
 ///     field_type x;  int ghost, ghostZ;
-///     template <bool Interior> void stencil(int i, int j, int k, double& diag, double& rest)
+///     template <unsigned Axes> void stencil(int i, int j, int k, double& diag, double& rest)
 ///     const;
 ///
 /// with A x = diag x(i, j, k) - rest at the unknown (i, j, k) (CellOperator.hpp,
@@ -19,10 +19,10 @@ namespace hikiln::cfd {
 template <class S> struct StencilApply {
   S s;
   typename S::field_type y;
-  template <bool Interior> KOKKOS_FORCEINLINE_FUNCTION double cell(int i, int j, int k) const {
+  template <unsigned Axes> KOKKOS_FORCEINLINE_FUNCTION double cell(int i, int j, int k) const {
     const int g = s.ghost, gz = s.ghostZ;
     double diag, rest;
-    s.template stencil<Interior>(i, j, k, diag, rest);
+    s.template stencil<Axes>(i, j, k, diag, rest);
     y(i + g, j + g, k + gz) = diag * s.x(i + g, j + g, k + gz) - rest;
     return 0.0;
   }
@@ -32,10 +32,10 @@ template <class S> struct StencilApply {
 template <class S> struct StencilResidual {
   S s;
   typename S::field_type f, r;
-  template <bool Interior> KOKKOS_FORCEINLINE_FUNCTION double cell(int i, int j, int k) const {
+  template <unsigned Axes> KOKKOS_FORCEINLINE_FUNCTION double cell(int i, int j, int k) const {
     const int g = s.ghost, gz = s.ghostZ;
     double diag, rest;
-    s.template stencil<Interior>(i, j, k, diag, rest);
+    s.template stencil<Axes>(i, j, k, diag, rest);
     const double res = f(i + g, j + g, k + gz) - (diag * s.x(i + g, j + g, k + gz) - rest);
     r(i + g, j + g, k + gz) = res;
     return res * res;
@@ -46,10 +46,10 @@ template <class S> struct StencilResidual {
 template <class S> struct StencilGaussSeidel {
   S s;
   typename S::field_type f;
-  template <bool Interior> KOKKOS_FORCEINLINE_FUNCTION double cell(int i, int j, int k) const {
+  template <unsigned Axes> KOKKOS_FORCEINLINE_FUNCTION double cell(int i, int j, int k) const {
     const int g = s.ghost, gz = s.ghostZ;
     double diag, rest;
-    s.template stencil<Interior>(i, j, k, diag, rest);
+    s.template stencil<Axes>(i, j, k, diag, rest);
     s.x(i + g, j + g, k + gz) = (f(i + g, j + g, k + gz) + rest) / diag;
     return 0.0;
   }

@@ -92,13 +92,14 @@ template <class MemorySpace> struct ViscousOperator {
 /// \brief The part of viscousStencil along axis A (a compile-time axis, so that the index
 /// arithmetic and the `A == C` choice fold away; as a loop over the axes GCC kept the axis in a
 /// register and the index arrays on the stack, perf/README.md).
-template <bool Interior, int Dims, bool Masks, int C, int A, class MemorySpace>
+template <unsigned Axes, int Dims, bool Masks, int C, int A, class MemorySpace>
 KOKKOS_FORCEINLINE_FUNCTION void
 viscousStencilAxis(ViscousOperator<MemorySpace> const& op, GridScales const& scale,
                    VelocityFields<MemorySpace> const& vel, int i, int j, int k, bool affine,
                    double& diag, double& rest) {
   constexpr int c = C;
   constexpr int a = A;
+  constexpr bool insideA = interiorAlong(Axes, a), insideC = interiorAlong(Axes, c);
   const int off[3] = {op.grid.ghost, op.grid.ghost, op.grid.template ghostZOf<Dims>()};
   const int idx[3] = {i, j, k};
   const auto& x = vel.comp[c];
@@ -109,7 +110,7 @@ viscousStencilAxis(ViscousOperator<MemorySpace> const& op, GridScales const& sca
     int cell[3] = {i, j, k};
     cell[a] = idx[a];
     cu = 2.0 * op.mu(cell[0] + off[0], cell[1] + off[1], cell[2] + off[2]);
-    cell[a] = wrapOf<Interior>(ax, idx[a] - 1);
+    cell[a] = wrapOf<insideA>(ax, idx[a] - 1);
     cd = 2.0 * op.mu(cell[0] + off[0], cell[1] + off[1], cell[2] + off[2]);
   } else {
     // shear stress on the (c, a) edges above and below along a
@@ -125,8 +126,8 @@ viscousStencilAxis(ViscousOperator<MemorySpace> const& op, GridScales const& sca
     const AxisClosure& alongC = op.axis[a][c];
     int p[3] = {i, j, k};
     const int cAbove = idx[c];
-    const int cBelow = wrapOf<Interior>(alongC, idx[c] - 1);
-    p[a] = wrapOf<Interior>(alongA, idx[a] + 1);
+    const int cBelow = wrapOf<insideC>(alongC, idx[c] - 1);
+    p[a] = wrapOf<insideA>(alongA, idx[a] + 1);
     p[c] = cAbove;
     const double upHigh = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
     p[c] = cBelow;
@@ -138,8 +139,8 @@ viscousStencilAxis(ViscousOperator<MemorySpace> const& op, GridScales const& sca
     const double dnLow = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
     rest += (cu * (upHigh - upLow) - cd * (dnHigh - dnLow)) * scale.invMixed[a][c];
   }
-  const Neighbour up = upOf<Interior>(ax, idx[a], affine);
-  const Neighbour dn = downOf<Interior>(ax, idx[a], affine);
+  const Neighbour up = upOf<insideA>(ax, idx[a], affine);
+  const Neighbour dn = downOf<insideA>(ax, idx[a], affine);
   if constexpr (a == c && Masks) {
     // the normal strain of the cell above (below) reads this face and the one above (below).
     // The stress is kept by a factor 1 or 0 (exact for the finite cu, cd >= 0) rather than a
@@ -160,18 +161,19 @@ viscousStencilAxis(ViscousOperator<MemorySpace> const& op, GridScales const& sca
   diag += cu * up.diag + cd * dn.diag;
   int q[3] = {i, j, k};
   q[a] = up.index;
-  rest += cu * neighbourValue<Interior>(up, x(q[0] + off[0], q[1] + off[1], q[2] + off[2]));
+  rest += cu * neighbourValue<insideA>(up, x(q[0] + off[0], q[1] + off[1], q[2] + off[2]));
   q[a] = dn.index;
-  rest += cd * neighbourValue<Interior>(dn, x(q[0] + off[0], q[1] + off[1], q[2] + off[2]));
+  rest += cd * neighbourValue<insideA>(dn, x(q[0] + off[0], q[1] + off[1], q[2] + off[2]));
 }
 
 /// \brief Splits (A u)_C at unknown (i, j, k) of component C (Dims axes) into diag * u_c(i, j, k) -
 /// rest: rest holds the neighbours of the same component, the other components (shear coupling)
-/// and, when affine, the boundary values. Interior: no neighbour, viscosity or coupling read needs
-/// a boundary closure or wrap-around (see componentSplit). Forced inline (with the bodies of
-/// StencilBodies.hpp): left to itself, the compiler keeps it out of line in the large solver
-/// translation units, a call per unknown that doubled the cost of a V-cycle.
-template <bool Interior, int Dims, int C, bool HasAlpha, bool Masks, class MemorySpace>
+/// and, when affine, the boundary values. Axes (BoxSplit.hpp): along these axes no neighbour,
+/// viscosity or coupling read needs a boundary closure or wrap-around (see componentSplit; the
+/// part along axis a reads along a, and its coupling term along C too). Forced inline (with the
+/// bodies of StencilBodies.hpp): left to itself, the compiler keeps it out of line in the large
+/// solver translation units, a call per unknown that doubled the cost of a V-cycle.
+template <unsigned Axes, int Dims, int C, bool HasAlpha, bool Masks, class MemorySpace>
 KOKKOS_FORCEINLINE_FUNCTION void
 viscousStencil(ViscousOperator<MemorySpace> const& op, GridScales const& scale,
                VelocityFields<MemorySpace> const& vel, int i, int j, int k, bool affine,
@@ -183,10 +185,10 @@ viscousStencil(ViscousOperator<MemorySpace> const& op, GridScales const& scale,
   }
   rest = 0.0;
   // the axes in order, as the sums have always been taken (bitwise the same results)
-  viscousStencilAxis<Interior, Dims, Masks, C, 0>(op, scale, vel, i, j, k, affine, diag, rest);
-  viscousStencilAxis<Interior, Dims, Masks, C, 1>(op, scale, vel, i, j, k, affine, diag, rest);
+  viscousStencilAxis<Axes, Dims, Masks, C, 0>(op, scale, vel, i, j, k, affine, diag, rest);
+  viscousStencilAxis<Axes, Dims, Masks, C, 1>(op, scale, vel, i, j, k, affine, diag, rest);
   if constexpr (Dims == 3) {
-    viscousStencilAxis<Interior, Dims, Masks, C, 2>(op, scale, vel, i, j, k, affine, diag, rest);
+    viscousStencilAxis<Axes, Dims, Masks, C, 2>(op, scale, vel, i, j, k, affine, diag, rest);
   }
 }
 
@@ -216,9 +218,9 @@ template <int Dims, int C, bool HasAlpha, bool Masks, class MemorySpace> struct 
                  bool aff)
       : op(o), scale(o.grid), u(uIn), x(uIn.comp[C]), affine(aff), ghost(o.grid.ghost),
         ghostZ(o.grid.ghostZ()) {}
-  template <bool Interior>
+  template <unsigned Axes>
   KOKKOS_FORCEINLINE_FUNCTION void stencil(int i, int j, int k, double& diag, double& rest) const {
-    viscousStencil<Interior, Dims, C, HasAlpha, Masks>(op, scale, u, i, j, k, affine, diag, rest);
+    viscousStencil<Axes, Dims, C, HasAlpha, Masks>(op, scale, u, i, j, k, affine, diag, rest);
   }
 };
 

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace {
@@ -157,18 +158,18 @@ TEST(TEST_CATEGORY, box_split_covers_every_cell_once) {
   });
 }
 
-// Marks each visit of a split loop: 1 for the branch-free interior stencil, 100 for the closures.
+// Marks each visit of a split loop with 1000 + the mask of axes it was given (BoxSplit.hpp).
 struct VisitMarks {
   Kokkos::View<int***, space::memory_space> marks;
-  template <bool Interior> KOKKOS_INLINE_FUNCTION double cell(int i, int j, int k) const {
-    marks(i, j, k) += Interior ? 1 : 100;
+  template <unsigned Axes> KOKKOS_INLINE_FUNCTION double cell(int i, int j, int k) const {
+    marks(i, j, k) += 1000 + static_cast<int>(Axes);
     return 0.0;
   }
 };
 
 // forEachSplitCell and forEachSplitColourCell (on the host one launch over the box's rows) visit
-// each cell of the box once, one colour only where asked, the interior's with cell<true> and the
-// shell's with cell<false>.
+// each cell of the box once, one colour only where asked; a visit skips the closures only along
+// axes where the cell is in the interior, and the interior's cells skip them along every axis.
 TEST(TEST_CATEGORY, split_loops_visit_each_cell_once_with_its_stencil) {
   forEachTestSplit([](int const(&lo)[3], int const(&hi)[3], BoxSplit const& split) {
     for (int colour = -1; colour < 2; ++colour) { // -1: forEachSplitCell
@@ -182,15 +183,32 @@ TEST(TEST_CATEGORY, split_loops_visit_each_cell_once_with_its_stencil) {
       for (int k = 0; k < 8; ++k)
         for (int j = 0; j < 8; ++j)
           for (int i = 0; i < 8; ++i) {
+            const int idx[3] = {i, j, k};
             const bool inBox =
                 i >= lo[0] && i < hi[0] && j >= lo[1] && j < hi[1] && k >= lo[2] && k < hi[2];
-            const bool interior = i >= split.interiorLo[0] && i < split.interiorHi[0] &&
-                                  j >= split.interiorLo[1] && j < split.interiorHi[1] &&
-                                  k >= split.interiorLo[2] && k < split.interiorHi[2];
+            unsigned insideAxes = 0u; // the axes along which the cell is in the interior
+            for (int a = 0; a < 3; ++a) {
+              if (idx[a] >= split.interiorLo[a] && idx[a] < split.interiorHi[a]) {
+                insideAxes |= 1u << a;
+              }
+            }
             const bool visited = inBox && (colour < 0 || ((i + j + k) & 1) == colour);
-            EXPECT_EQ(h(i, j, k), visited ? (interior ? 1 : 100) : 0)
-                << "box " << lo[0] << lo[1] << lo[2] << "-" << hi[0] << hi[1] << hi[2] << " colour "
-                << colour << " cell " << i << j << k;
+            const std::string where = "box " + std::to_string(lo[0]) + std::to_string(lo[1]) +
+                                      std::to_string(lo[2]) + "-" + std::to_string(hi[0]) +
+                                      std::to_string(hi[1]) + std::to_string(hi[2]) + " colour " +
+                                      std::to_string(colour) + " cell " + std::to_string(i) +
+                                      std::to_string(j) + std::to_string(k);
+            if (!visited) {
+              EXPECT_EQ(h(i, j, k), 0) << where;
+              continue;
+            }
+            ASSERT_GE(h(i, j, k), 1000) << where;
+            ASSERT_LE(h(i, j, k), 1007) << where; // once
+            const auto given = static_cast<unsigned>(h(i, j, k) - 1000);
+            EXPECT_EQ(given & ~insideAxes, 0u) << where << ": closures skipped where needed";
+            if (insideAxes == allAxes) {
+              EXPECT_EQ(given, allAxes) << where;
+            }
           }
     }
   });

@@ -263,7 +263,7 @@ field copyOf(field const& a) {
   return b;
 }
 
-// Calls body.cell<false>(i, j, k) (the closures' path, one unknown at a time) on the unknowns of
+// Calls body.cell<noAxes>(i, j, k) (the closures' path, one unknown at a time) on the unknowns of
 // split of the given colour (-1: all) and returns the sum of what it returns.
 template <class Body> double cellByCell(BoxSplit const& split, Body const& body, int colour) {
   double sum = 0.0;
@@ -271,7 +271,7 @@ template <class Body> double cellByCell(BoxSplit const& split, Body const& body,
     for (int j = split.lo[1]; j < split.hi[1]; ++j)
       for (int i = split.lo[0]; i < split.hi[0]; ++i)
         if (colour < 0 || ((i + j + k) & 1) == colour) {
-          sum += body.template cell<false>(i, j, k);
+          sum += body.template cell<noAxes>(i, j, k);
         }
   return sum;
 }
