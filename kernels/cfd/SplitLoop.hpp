@@ -10,11 +10,12 @@
 ///
 /// (Axes, a mask of BoxSplit.hpp, names the axes along which no closure is needed: allAxes in the
 /// interior, noAxes on the shell; on the host a shell row's middle takes xAxis and an interior
-/// row's ends yzAxes); forEachSplitCell ignores the returned
-/// value, sumOverSplitCells adds it up (e.g. a squared residual; interior and shell are separate
-/// reductions there on every backend), forEachSplitColourCell visits one colour of a red-black
-/// sweep. Each cell gets the same arithmetic on every path, and no cell of a launch reads what
-/// another writes, so results do not depend on the path.
+/// row's ends yzAxes); forEachSplitCell ignores the returned value, sumOverSplitCells adds it up
+/// (e.g. a squared residual; interior and shell are separate reductions there on every backend),
+/// forEachSplitColourCell visits one colour of a red-black sweep. Each cell gets the same
+/// arithmetic on every path (a term read without its closure differs from the closure's only in
+/// the sign of a zero, which the stencils' sums drop), and no cell of a launch reads what another
+/// writes, so results do not depend on the path.
 
 #include "kernels/cfd/BoxSplit.hpp"
 #include "kernels/cfd/Grid.hpp"
