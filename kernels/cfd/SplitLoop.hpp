@@ -141,6 +141,10 @@ template <class Body> struct ShellColourCells {
 /// throughout; the others are shell only where x is (their first and last cells when x is split).
 /// One launch instead of an interior and a shell launch: on two threads a launch's fork and join
 /// cost about 3.5 us, and a drum step makes thousands (perf/README.md, "One launch per split box").
+/// A box without an interior (a coarse level's, which splitUnknowns() leaves unsplit, or one too
+/// thin to have one) is walked the same way, each cell with the closures along the axes where it
+/// has no interior: not as a flat list of shell cells, each decoded from its index and half of
+/// them of the other colour (perf/README.md, "Unsplit boxes walked by rows").
 struct SplitRows {
   Rows box;                         ///< every row of the box
   int xLo, xHi, yLo, yHi, zLo, zHi; ///< the interior's ranges
@@ -231,11 +235,11 @@ template <class ExecutionSpace, class Body>
 void forEachSplitCell(ExecutionSpace const& space, std::string const& label, BoxSplit const& split,
                       Body const& body) {
   if constexpr (detail::walksRows<ExecutionSpace>) {
-    if (split.interiorSize() > 0) {
+    if (split.interiorSize() + split.shellSize() > 0) {
       Kokkos::parallel_for(label, detail::rowPolicy(space, split.lo, split.hi),
                            detail::SplitBoxRows<Body, false>{body, detail::SplitRows(split)});
-      return;
     }
+    return;
   } else if (split.interiorSize() > 0) {
     Kokkos::parallel_for(label + "::interior",
                          gridPolicy(space, split.interiorLo, split.interiorHi),
@@ -278,12 +282,12 @@ template <class ExecutionSpace, class Body>
 void forEachSplitColourCell(ExecutionSpace const& space, std::string const& label,
                             BoxSplit const& split, int colour, Body const& body) {
   if constexpr (detail::walksRows<ExecutionSpace>) {
-    if (split.interiorSize() > 0) {
+    if (split.interiorSize() + split.shellSize() > 0) {
       Kokkos::parallel_for(
           label, detail::rowPolicy(space, split.lo, split.hi),
           detail::SplitBoxRows<Body, true>{body, detail::SplitRows(split), colour});
-      return;
     }
+    return;
   } else if (split.interiorSize() > 0) {
     const int i0 = split.interiorLo[0];
     const int i1 = split.interiorHi[0];

@@ -123,12 +123,14 @@ template <class Check> void forEachTestSplit(Check const& check) {
                           {0, 0, 0, 3, 3, 3}, {0, 0, 0, 1, 1, 1}, {0, 0, 0, 0, 4, 4},
                           {1, 1, 0, 7, 6, 3}, {1, 2, 1, 8, 8, 8}};
   for (const auto& b : boxes) {
+    const int lo[3] = {b[0], b[1], b[2]};
+    const int hi[3] = {b[3], b[4], b[5]};
     for (const bool threeD : {false, true}) {
-      const int lo[3] = {b[0], b[1], b[2]};
-      const int hi[3] = {b[3], b[4], b[5]};
       const bool active[3] = {true, true, threeD};
       check(lo, hi, splitBox(lo, hi, active));
     }
+    // a small grid's box: not split, all shell (a coarse multigrid level)
+    check(lo, hi, splitUnknowns(makeGrid(8, 8, 8, 1.0, 1.0, 1.0), lo, hi));
   }
 }
 
