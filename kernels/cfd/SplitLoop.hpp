@@ -11,7 +11,7 @@
 /// (Axes, a mask of BoxSplit.hpp, names the axes along which no closure is needed: allAxes in the
 /// interior, noAxes on the shell; on the host a shell row's middle takes xAxis and an interior
 /// row's ends yzAxes); forEachSplitCell ignores the returned value, sumOverSplitCells adds it up
-/// (e.g. a squared residual; interior and shell are separate reductions there on every backend),
+/// (e.g. a squared residual: on the host in row order, on devices as an interior and a shell sum),
 /// forEachSplitColourCell visits one colour of a red-black sweep. Each cell gets the same
 /// arithmetic on every path (a term read without its closure differs from the closure's only in
 /// the sign of a zero, which the stencils' sums drop), and no cell of a launch reads what another
@@ -108,21 +108,6 @@ struct Rows {
   KOKKOS_INLINE_FUNCTION int k(const int row) const { return k0 + row / nj; }
 };
 
-template <class Body> struct InteriorRowSum {
-  using value_type = double;
-  Body body;
-  Rows rows;
-  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int row, double& sum) const {
-    const int j = rows.j(row), k = rows.k(row);
-    double partial = sum; // a local: the same additions in the same order, kept in a register
-    HIKILN_INDEPENDENT_CELLS
-    for (int i = rows.i0; i < rows.i1; ++i) {
-      partial += body.template cell<allAxes>(i, j, k);
-    }
-    sum = partial;
-  }
-};
-
 template <class Body> struct ShellColourCells {
   Body body;
   BoxSplit split;
@@ -156,6 +141,23 @@ struct SplitRows {
   }
 };
 
+/// Walks row (j, k) of rows.box in its pieces, each with the closures only along the axes where
+/// its cells need them: walker.walk<Axes>(a, b, j, k) visits [a, b). At 64^3 the shell (9 % of
+/// the cells) through the closures along every axis took about as long as the interior.
+template <class Walker>
+KOKKOS_FORCEINLINE_FUNCTION void walkSplitRow(SplitRows const& rows, Walker const& walker,
+                                              const int j, const int k) {
+  if (rows.shellRow(j, k)) {
+    walker.template walk<noAxes>(rows.box.i0, rows.xLo, j, k);
+    walker.template walk<xAxis>(rows.xLo, rows.xHi, j, k);
+    walker.template walk<noAxes>(rows.xHi, rows.box.i1, j, k);
+    return;
+  }
+  walker.template walk<yzAxes>(rows.box.i0, rows.xLo, j, k);
+  walker.template walk<allAxes>(rows.xLo, rows.xHi, j, k);
+  walker.template walk<yzAxes>(rows.xHi, rows.box.i1, j, k);
+}
+
 /// One launch's functor (SplitRows): every cell of each row, or (Coloured) those of one colour.
 template <class Body, bool Coloured> struct SplitBoxRows {
   Body body;
@@ -172,18 +174,35 @@ template <class Body, bool Coloured> struct SplitBoxRows {
   }
 
   KOKKOS_FORCEINLINE_FUNCTION void operator()(const int row) const {
-    const int j = rows.box.j(row), k = rows.box.k(row);
-    // the closures only along the axes where the cell needs them: at 64^3 the shell (9 % of the
-    // cells) through the closures along every axis took about as long as the interior
-    if (rows.shellRow(j, k)) {
-      walk<noAxes>(rows.box.i0, rows.xLo, j, k);
-      walk<xAxis>(rows.xLo, rows.xHi, j, k);
-      walk<noAxes>(rows.xHi, rows.box.i1, j, k);
-      return;
+    walkSplitRow(rows, *this, rows.box.j(row), rows.box.k(row));
+  }
+};
+
+/// Adds body.cell<Axes> over pieces of rows to `partial` (a local of SplitBoxRowSum).
+template <class Body> struct RowPieceSum {
+  Body const& body;
+  double& partial;
+  template <unsigned Axes>
+  KOKKOS_FORCEINLINE_FUNCTION void walk(const int a, const int b, const int j, const int k) const {
+    double s = partial; // a register: the same additions in the same order
+    HIKILN_INDEPENDENT_CELLS
+    for (int i = a; i < b; ++i) {
+      s += body.template cell<Axes>(i, j, k);
     }
-    walk<yzAxes>(rows.box.i0, rows.xLo, j, k);
-    walk<allAxes>(rows.xLo, rows.xHi, j, k);
-    walk<yzAxes>(rows.xHi, rows.box.i1, j, k);
+    partial = s;
+  }
+};
+
+/// One launch's reduction (SplitRows): the sum of body.cell over every cell of the box, row by
+/// row, each row's cells in order.
+template <class Body> struct SplitBoxRowSum {
+  using value_type = double;
+  Body body;
+  SplitRows rows;
+  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int row, double& sum) const {
+    double partial = sum;
+    walkSplitRow(rows, RowPieceSum<Body>{body, partial}, rows.box.j(row), rows.box.k(row));
+    sum = partial;
   }
 };
 
@@ -252,29 +271,33 @@ void forEachSplitCell(ExecutionSpace const& space, std::string const& label, Box
   }
 }
 
-/// \brief As forEachSplitCell; returns the sum of the values body.cell returns (interior sum plus
-/// shell sum, each a parallel reduction).
+/// \brief As forEachSplitCell; returns the sum of the values body.cell returns (e.g. a squared
+/// residual). On the host one reduction over the box's rows, each row's cells added in order; on
+/// devices the interior sum plus the shell sum, each a parallel reduction.
 template <class ExecutionSpace, class Body>
 double sumOverSplitCells(ExecutionSpace const& space, std::string const& label,
                          BoxSplit const& split, Body const& body) {
-  double interior = 0.0, shell = 0.0;
-  if (split.interiorSize() > 0) {
-    if constexpr (detail::walksRows<ExecutionSpace>) {
-      Kokkos::parallel_reduce(
-          label + "::interior", detail::rowPolicy(space, split.interiorLo, split.interiorHi),
-          detail::InteriorRowSum<Body>{body, {split.interiorLo, split.interiorHi}}, interior);
-    } else {
+  if constexpr (detail::walksRows<ExecutionSpace>) {
+    double sum = 0.0;
+    if (split.interiorSize() + split.shellSize() > 0) {
+      Kokkos::parallel_reduce(label, detail::rowPolicy(space, split.lo, split.hi),
+                              detail::SplitBoxRowSum<Body>{body, detail::SplitRows(split)}, sum);
+    }
+    return sum;
+  } else {
+    double interior = 0.0, shell = 0.0;
+    if (split.interiorSize() > 0) {
       Kokkos::parallel_reduce(label + "::interior",
                               gridPolicy(space, split.interiorLo, split.interiorHi),
                               detail::InteriorSum<Body>{body}, interior);
     }
+    if (split.shellSize() > 0) {
+      Kokkos::parallel_reduce(label + "::shell",
+                              Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
+                              detail::ShellSum<Body>{body, split}, shell);
+    }
+    return interior + shell;
   }
-  if (split.shellSize() > 0) {
-    Kokkos::parallel_reduce(label + "::shell",
-                            Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
-                            detail::ShellSum<Body>{body, split}, shell);
-  }
-  return interior + shell;
 }
 
 /// \brief body.cell<Axes>(i, j, k) on the cells of split with (i + j + k) % 2 == colour.

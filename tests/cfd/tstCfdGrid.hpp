@@ -165,19 +165,23 @@ struct VisitMarks {
   Kokkos::View<int***, space::memory_space> marks;
   template <unsigned Axes> KOKKOS_INLINE_FUNCTION double cell(int i, int j, int k) const {
     marks(i, j, k) += 1000 + static_cast<int>(Axes);
-    return 0.0;
+    return 1.0; // sumOverSplitCells counts the visits
   }
 };
 
-// forEachSplitCell and forEachSplitColourCell (on the host one launch over the box's rows) visit
-// each cell of the box once, one colour only where asked; a visit skips the closures only along
-// axes where the cell is in the interior, and the interior's cells skip them along every axis.
+// forEachSplitCell, sumOverSplitCells and forEachSplitColourCell (on the host one launch over the
+// box's rows) visit each cell of the box once, one colour only where asked; a visit skips the
+// closures only along axes where the cell is in the interior, and the interior's cells skip them
+// along every axis.
 TEST(TEST_CATEGORY, split_loops_visit_each_cell_once_with_its_stencil) {
   forEachTestSplit([](int const(&lo)[3], int const(&hi)[3], BoxSplit const& split) {
-    for (int colour = -1; colour < 2; ++colour) { // -1: forEachSplitCell
+    for (int colour = -2; colour < 2; ++colour) { // -2: forEachSplitCell, -1: the sum
       const VisitMarks body{Kokkos::View<int***, space::memory_space>("marks", 8, 8, 8)};
-      if (colour < 0) {
+      if (colour == -2) {
         forEachSplitCell(space{}, "test::splitCells", split, body);
+      } else if (colour == -1) {
+        const double visits = sumOverSplitCells(space{}, "test::sumOverSplitCells", split, body);
+        EXPECT_EQ(visits, static_cast<double>(split.interiorSize() + split.shellSize()));
       } else {
         forEachSplitColourCell(space{}, "test::splitColourCells", split, colour, body);
       }
