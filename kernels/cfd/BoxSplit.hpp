@@ -46,6 +46,8 @@ struct BoxSplit {
   }
   /// \brief Number of shell cells.
   KOKKOS_INLINE_FUNCTION std::int64_t shellSize() const { return slabStart[numSlabs]; }
+  /// \brief Number of cells of the box: interior and shell.
+  KOKKOS_INLINE_FUNCTION std::int64_t size() const { return interiorSize() + shellSize(); }
   /// \brief Cell s of the shell, s in [0, shellSize()).
   KOKKOS_INLINE_FUNCTION void shellCell(std::int64_t s, int& i, int& j, int& k) const {
     int slab = 0;

@@ -254,7 +254,7 @@ template <class ExecutionSpace, class Body>
 void forEachSplitCell(ExecutionSpace const& space, std::string const& label, BoxSplit const& split,
                       Body const& body) {
   if constexpr (detail::walksRows<ExecutionSpace>) {
-    if (split.interiorSize() + split.shellSize() > 0) {
+    if (split.size() > 0) {
       Kokkos::parallel_for(label, detail::rowPolicy(space, split.lo, split.hi),
                            detail::SplitBoxRows<Body, false>{body, detail::SplitRows(split)});
     }
@@ -279,7 +279,7 @@ double sumOverSplitCells(ExecutionSpace const& space, std::string const& label,
                          BoxSplit const& split, Body const& body) {
   if constexpr (detail::walksRows<ExecutionSpace>) {
     double sum = 0.0;
-    if (split.interiorSize() + split.shellSize() > 0) {
+    if (split.size() > 0) {
       Kokkos::parallel_reduce(label, detail::rowPolicy(space, split.lo, split.hi),
                               detail::SplitBoxRowSum<Body>{body, detail::SplitRows(split)}, sum);
     }
@@ -305,7 +305,7 @@ template <class ExecutionSpace, class Body>
 void forEachSplitColourCell(ExecutionSpace const& space, std::string const& label,
                             BoxSplit const& split, int colour, Body const& body) {
   if constexpr (detail::walksRows<ExecutionSpace>) {
-    if (split.interiorSize() + split.shellSize() > 0) {
+    if (split.size() > 0) {
       Kokkos::parallel_for(
           label, detail::rowPolicy(space, split.lo, split.hi),
           detail::SplitBoxRows<Body, true>{body, detail::SplitRows(split), colour});
