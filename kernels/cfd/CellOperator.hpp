@@ -193,6 +193,21 @@ void smoothCellColour(ExecutionSpace const& space, CellOperator<MemorySpace> con
   });
 }
 
+/// \brief A red-black Gauss-Seidel sweep for A x = f: colour `first`, then the other, as two
+/// smoothCellColour() calls give it (on the host in one pass, forEachSplitRedBlackCell()).
+template <class ExecutionSpace, class MemorySpace>
+void smoothCellRedBlack(ExecutionSpace const& space, CellOperator<MemorySpace> const& op,
+                        Field<MemorySpace> const& x, Field<MemorySpace> const& f, int first,
+                        bool affine) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::cfd::smoothCellRedBlack: fields not accessible from the execution space");
+  detail::withCellForm(op, [&](auto dims, auto alpha) {
+    using Stencil = detail::CellStencilOf<MemorySpace, decltype(dims), decltype(alpha)>;
+    forEachSplitRedBlackCell(space, "hikiln::cfd::smoothCellRedBlack", cellSplit(op), first,
+                             StencilGaussSeidel<Stencil>{{op, x, affine}, f});
+  });
+}
+
 /// \brief Harmonic mean 2 a b / (a + b) of two positive coefficients (0 if both are 0).
 KOKKOS_INLINE_FUNCTION double harmonicMean(double a, double b) {
   const double s = a + b;

@@ -206,6 +206,45 @@ template <class Body> struct SplitBoxRowSum {
   }
 };
 
+/// Host: a whole red-black sweep (colour `first`, then the other) in one pass over the box
+/// instead of two. The box's planes (the rows of one k; in a box one cell deep, single rows) are
+/// split into one chunk per launch index; a chunk takes the first colour on plane p and the
+/// second on plane p - 1 right after, while plane p - 1's data is still in cache, so the arrays
+/// stream from memory once per sweep. The stencils couple neighbouring planes only, so plane p -
+/// 1's second colour sees the first colour's new values on p - 2 .. p, and plane p's first colour
+/// the second colour's old values on p - 1 .. p + 1: the cells get the values of two colour
+/// passes, bit for bit. A chunk's first and last planes border another chunk (or, along a
+/// periodic axis, each other), so their second colour waits for a second launch (Edges).
+template <class Body> struct SplitBoxRedBlack {
+  SplitBoxRows<Body, true> first, second; ///< the coloured row walks of the two colours
+  int rowsPerPlane, planes, chunks;
+  bool edges = false; ///< the second launch: the chunks' first and last planes' second colour
+
+  KOKKOS_FORCEINLINE_FUNCTION void plane(SplitBoxRows<Body, true> const& walk, int p) const {
+    for (int row = p * rowsPerPlane; row < (p + 1) * rowsPerPlane; ++row) {
+      walk(row);
+    }
+  }
+
+  KOKKOS_FORCEINLINE_FUNCTION void operator()(const int chunk) const {
+    const int p0 = static_cast<int>(static_cast<std::int64_t>(planes) * chunk / chunks);
+    const int p1 = static_cast<int>(static_cast<std::int64_t>(planes) * (chunk + 1) / chunks);
+    if (edges) {
+      plane(second, p0);
+      if (p1 - 1 > p0) {
+        plane(second, p1 - 1);
+      }
+      return;
+    }
+    for (int p = p0; p < p1; ++p) {
+      plane(first, p);
+      if (p - 1 > p0) {
+        plane(second, p - 1);
+      }
+    }
+  }
+};
+
 /// True when grid kernels on ExecutionSpace walk whole rows per launch index (host spaces);
 /// device spaces keep one cell per index.
 template <class ExecutionSpace>
@@ -323,6 +362,36 @@ void forEachSplitColourCell(ExecutionSpace const& space, std::string const& labe
     Kokkos::parallel_for(label + "::shell",
                          Kokkos::RangePolicy<ExecutionSpace>(space, 0, split.shellSize()),
                          detail::ShellColourCells<Body>{body, split, colour});
+  }
+}
+
+/// \brief A red-black sweep: forEachSplitColourCell with colour `first`, then with the other
+/// colour, with the same results bit for bit. On the host one pass over the box (two launches:
+/// SplitBoxRedBlack), so that a grid larger than the caches streams from memory once per sweep;
+/// chunks (default: the space's concurrency, at most one per plane) sets how the planes are
+/// shared out (tests vary it). Devices take the two colour launches.
+template <class ExecutionSpace, class Body>
+void forEachSplitRedBlackCell(ExecutionSpace const& space, std::string const& label,
+                              BoxSplit const& split, int first, Body const& body, int chunks = 0) {
+  if constexpr (detail::walksRows<ExecutionSpace>) {
+    if (split.size() == 0) {
+      return;
+    }
+    const detail::SplitRows rows(split);
+    const int nk = split.hi[2] - split.lo[2];
+    detail::SplitBoxRedBlack<Body> sweep{
+        {body, rows, first}, {body, rows, 1 - first}, nk > 1 ? rows.box.nj : 1, 0, 0};
+    sweep.planes = nk > 1 ? nk : rows.box.nj;
+    sweep.chunks =
+        math::min(chunks > 0 ? chunks : static_cast<int>(space.concurrency()), sweep.planes);
+    const Kokkos::RangePolicy<ExecutionSpace> policy(space, 0, sweep.chunks);
+    Kokkos::parallel_for(label, policy, sweep);
+    sweep.edges = true;
+    Kokkos::parallel_for(label, policy, sweep);
+  } else {
+    (void)chunks;
+    forEachSplitColourCell(space, label, split, first, body);
+    forEachSplitColourCell(space, label, split, 1 - first, body);
   }
 }
 

@@ -268,16 +268,46 @@ double viscousResidualComponent(ExecutionSpace const& space, ViscousOperator<Mem
   return sum;
 }
 
-/// \brief One colour of the red-black sweep over component C (see smoothViscousColour).
+/// \brief Red-black sweep over component C: colour `colour` alone, or (both) that colour and then
+/// the other (see smoothViscousColour and smoothViscousRedBlack).
 template <int Dims, int C, class ExecutionSpace, class MemorySpace>
 void smoothViscousComponent(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
                             VelocityFields<MemorySpace> const& u,
-                            VelocityFields<MemorySpace> const& f, int colour, bool affine) {
+                            VelocityFields<MemorySpace> const& f, int colour, bool both,
+                            bool affine) {
   withViscousForm(op, [&](auto alpha, auto masks) {
     using Stencil = ViscousStencilOf<Dims, C, MemorySpace, decltype(alpha), decltype(masks)>;
-    forEachSplitColourCell(space, "hikiln::cfd::smoothViscousColour", componentSplit(op, C), colour,
-                           StencilGaussSeidel<Stencil>{{op, u, affine}, f.comp[C]});
+    const StencilGaussSeidel<Stencil> body{{op, u, affine}, f.comp[C]};
+    if (both) {
+      forEachSplitRedBlackCell(space, "hikiln::cfd::smoothViscousRedBlack", componentSplit(op, C),
+                               colour, body);
+    } else {
+      forEachSplitColourCell(space, "hikiln::cfd::smoothViscousColour", componentSplit(op, C),
+                             colour, body);
+    }
   });
+}
+
+/// \brief smoothViscousComponent for the run-time dimension count and component c.
+template <class ExecutionSpace, class MemorySpace>
+void smoothViscous(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
+                   VelocityFields<MemorySpace> const& u, VelocityFields<MemorySpace> const& f,
+                   int c, int colour, bool both, bool affine) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::cfd::smoothViscous: fields not accessible");
+  if (op.grid.is3D()) {
+    if (c == 0) {
+      smoothViscousComponent<3, 0>(space, op, u, f, colour, both, affine);
+    } else if (c == 1) {
+      smoothViscousComponent<3, 1>(space, op, u, f, colour, both, affine);
+    } else {
+      smoothViscousComponent<3, 2>(space, op, u, f, colour, both, affine);
+    }
+  } else if (c == 0) {
+    smoothViscousComponent<2, 0>(space, op, u, f, colour, both, affine);
+  } else {
+    smoothViscousComponent<2, 1>(space, op, u, f, colour, both, affine);
+  }
 }
 
 } // namespace detail
@@ -321,21 +351,16 @@ template <class ExecutionSpace, class MemorySpace>
 void smoothViscousColour(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
                          VelocityFields<MemorySpace> const& u, VelocityFields<MemorySpace> const& f,
                          int c, int colour, bool affine) {
-  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
-                "hikiln::cfd::smoothViscousColour: fields not accessible");
-  if (op.grid.is3D()) {
-    if (c == 0) {
-      detail::smoothViscousComponent<3, 0>(space, op, u, f, colour, affine);
-    } else if (c == 1) {
-      detail::smoothViscousComponent<3, 1>(space, op, u, f, colour, affine);
-    } else {
-      detail::smoothViscousComponent<3, 2>(space, op, u, f, colour, affine);
-    }
-  } else if (c == 0) {
-    detail::smoothViscousComponent<2, 0>(space, op, u, f, colour, affine);
-  } else {
-    detail::smoothViscousComponent<2, 1>(space, op, u, f, colour, affine);
-  }
+  detail::smoothViscous(space, op, u, f, c, colour, false, affine);
+}
+
+/// \brief A red-black sweep over component c: colour `first`, then the other, as two
+/// smoothViscousColour() calls give it (on the host in one pass, forEachSplitRedBlackCell()).
+template <class ExecutionSpace, class MemorySpace>
+void smoothViscousRedBlack(ExecutionSpace const& space, ViscousOperator<MemorySpace> const& op,
+                           VelocityFields<MemorySpace> const& u,
+                           VelocityFields<MemorySpace> const& f, int c, int first, bool affine) {
+  detail::smoothViscous(space, op, u, f, c, first, true, affine);
 }
 
 /// \brief How an edge's viscosity is made from the four cells around it.

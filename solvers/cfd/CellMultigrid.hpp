@@ -360,8 +360,7 @@ private:
       return;
     }
     for (int s = 0; s < _options.preSmooth; ++s) {
-      smoothCellColour(_space, level.op, x, f, 0, affine);
-      smoothCellColour(_space, level.op, x, f, 1, affine);
+      smoothCellRedBlack(_space, level.op, x, f, 0, affine);
     }
     cellResidual(_space, level.op, x, f, level.res, affine);
     Level& coarse = _levels[l + 1];
@@ -370,8 +369,7 @@ private:
     cycle(l + 1, coarse.x, coarse.rhs, false);
     prolongateAdd(_space, coarse.fromFiner, coarse.x, x);
     for (int s = 0; s < _options.postSmooth; ++s) {
-      smoothCellColour(_space, level.op, x, f, 1, affine);
-      smoothCellColour(_space, level.op, x, f, 0, affine);
+      smoothCellRedBlack(_space, level.op, x, f, 1, affine);
     }
   }
 

@@ -360,8 +360,7 @@ private:
     const int numComps = level.op.numComponents();
     for (int step = 0; step < numComps; ++step) {
       const int c = forward ? step : numComps - 1 - step;
-      smoothViscousColour(_space, level.op, u, f, c, forward ? 0 : 1, affine);
-      smoothViscousColour(_space, level.op, u, f, c, forward ? 1 : 0, affine);
+      smoothViscousRedBlack(_space, level.op, u, f, c, forward ? 0 : 1, affine);
     }
   }
 

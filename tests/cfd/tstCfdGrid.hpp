@@ -222,6 +222,58 @@ TEST(TEST_CATEGORY, split_loops_visit_each_cell_once_with_its_stencil) {
   });
 }
 
+// A Gauss-Seidel-like update of one cell of an 8^3 torus from its six neighbours (indices wrap,
+// so a box spanning an axis couples its first and last planes, as a periodic axis does).
+struct TorusGaussSeidel {
+  Kokkos::View<double***, space::memory_space> x;
+  template <unsigned> KOKKOS_INLINE_FUNCTION double cell(int i, int j, int k) const {
+    const double around = x((i + 1) & 7, j, k) + x((i + 7) & 7, j, k) + x(i, (j + 1) & 7, k) +
+                          x(i, (j + 7) & 7, k) + x(i, j, (k + 1) & 7) + x(i, j, (k + 7) & 7);
+    x(i, j, k) = 0.3 * x(i, j, k) + 0.1 * around + 0.01 * (i - 2 * j + 3 * k);
+    return 0.0;
+  }
+};
+
+// forEachSplitRedBlackCell (on the host one pass over the box's planes, shared out in chunks)
+// gives bit for bit what two colour passes give, whichever colour goes first and however many
+// chunks the planes are split into.
+TEST(TEST_CATEGORY, split_red_black_sweep_equals_two_colour_passes) {
+  forEachTestSplit([](int const(&lo)[3], int const(&hi)[3], BoxSplit const& split) {
+    using view = Kokkos::View<double***, space::memory_space>;
+    const auto start = Kokkos::create_mirror_view(view("start", 8, 8, 8));
+    for (int k = 0; k < 8; ++k)
+      for (int j = 0; j < 8; ++j)
+        for (int i = 0; i < 8; ++i) {
+          start(i, j, k) = std::sin(1.0 + i + 3.1 * j - 1.7 * k * k);
+        }
+    for (int first = 0; first < 2; ++first) {
+      const view twoPasses("twoPasses", 8, 8, 8);
+      Kokkos::deep_copy(twoPasses, start);
+      forEachSplitColourCell(space{}, "test::colour", split, first, TorusGaussSeidel{twoPasses});
+      forEachSplitColourCell(space{}, "test::colour", split, 1 - first,
+                             TorusGaussSeidel{twoPasses});
+      const auto expected = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, twoPasses);
+      for (int chunks : {0, 1, 2, 3, 5, 8}) {
+        const view onePass("onePass", 8, 8, 8);
+        Kokkos::deep_copy(onePass, start);
+        forEachSplitRedBlackCell(space{}, "test::redBlack", split, first, TorusGaussSeidel{onePass},
+                                 chunks);
+        const auto got = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace{}, onePass);
+        int differ = 0, changed = 0;
+        for (int k = 0; k < 8; ++k)
+          for (int j = 0; j < 8; ++j)
+            for (int i = 0; i < 8; ++i) {
+              differ += got(i, j, k) != expected(i, j, k) ? 1 : 0;
+              changed += got(i, j, k) != start(i, j, k) ? 1 : 0;
+            }
+        EXPECT_EQ(differ, 0) << "box " << lo[0] << lo[1] << lo[2] << "-" << hi[0] << hi[1] << hi[2]
+                             << " first colour " << first << " chunks " << chunks;
+        EXPECT_EQ(static_cast<std::int64_t>(changed), split.size()); // every cell swept
+      }
+    }
+  });
+}
+
 // Transfer of a field of staggering s between g and its coarsening by `ratio`.
 Transfer makeTestTransfer(Grid const& fine, Grid const& coarse, ScalarBoundaries const& sbc,
                           VelocityBoundaries const& vbc, Staggering s, int const (&ratio)[3],

@@ -368,6 +368,13 @@ template <class Space, int Dims> void checkViscousRows(Case const& c, bool withA
           byUnknown(comp, sweptByUnknown, field(), affine, 2 + colour);
           EXPECT_TRUE(sameBits(swept.comp[comp], sweptByUnknown.comp[comp]))
               << "sweep, component " << comp << ", colour " << colour << ", affine " << affine;
+          // the whole sweep in one pass: the two colours' passes, bit for bit
+          const velocity oneSweep = copyOf(c, u);
+          smoothViscousRedBlack(Space{}, op, oneSweep, f, comp, colour, affine);
+          byUnknown(comp, sweptByUnknown, field(), affine, 2 + (1 - colour));
+          EXPECT_TRUE(sameBits(oneSweep.comp[comp], sweptByUnknown.comp[comp]))
+              << "red-black sweep, component " << comp << ", first colour " << colour << ", affine "
+              << affine;
         }
       }
       EXPECT_GT(reference, 0.0);
@@ -456,6 +463,11 @@ template <class Space, int Dims> void checkCellRows(Case const& c, bool withAlph
         smoothCellColour(Space{}, op, swept, f, colour, affine);
         byUnknown(sweptByUnknown, field(), affine, 2 + colour);
         EXPECT_TRUE(sameBits(swept, sweptByUnknown)) << "sweep, colour " << colour;
+        // the whole sweep in one pass: the two colours' passes, bit for bit
+        const field oneSweep = copyOf(x);
+        smoothCellRedBlack(Space{}, op, oneSweep, f, colour, affine);
+        byUnknown(sweptByUnknown, field(), affine, 2 + (1 - colour));
+        EXPECT_TRUE(sameBits(oneSweep, sweptByUnknown)) << "red-black sweep, first " << colour;
       }
     }
   } else {
