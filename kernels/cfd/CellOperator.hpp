@@ -177,6 +177,23 @@ double cellResidualNorm2(ExecutionSpace const& space, CellOperator<MemorySpace> 
   return sum;
 }
 
+namespace detail {
+/// \brief Red-black sweep for A x = f: colour `colour` alone, or (both) that colour and then
+/// the other (see smoothCellColour and smoothCellRedBlack).
+template <class ExecutionSpace, class MemorySpace>
+void smoothCell(ExecutionSpace const& space, CellOperator<MemorySpace> const& op,
+                Field<MemorySpace> const& x, Field<MemorySpace> const& f, int colour, bool both,
+                bool affine) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::cfd::smoothCell: fields not accessible from the execution space");
+  withCellForm(op, [&](auto dims, auto alpha) {
+    using Stencil = CellStencilOf<MemorySpace, decltype(dims), decltype(alpha)>;
+    forEachSplitSweepCell(space, "hikiln::cfd::smoothCell", cellSplit(op), colour, both,
+                          StencilGaussSeidel<Stencil>{{op, x, affine}, f});
+  });
+}
+} // namespace detail
+
 /// \brief One colour of a red-black Gauss-Seidel sweep for A x = f: every cell with
 /// (i + j + k) % 2 == colour is solved for with its neighbours (the other colour) fixed. The
 /// result does not depend on the order or the thread count.
@@ -184,13 +201,7 @@ template <class ExecutionSpace, class MemorySpace>
 void smoothCellColour(ExecutionSpace const& space, CellOperator<MemorySpace> const& op,
                       Field<MemorySpace> const& x, Field<MemorySpace> const& f, int colour,
                       bool affine) {
-  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
-                "hikiln::cfd::smoothCellColour: fields not accessible from the execution space");
-  detail::withCellForm(op, [&](auto dims, auto alpha) {
-    using Stencil = detail::CellStencilOf<MemorySpace, decltype(dims), decltype(alpha)>;
-    forEachSplitColourCell(space, "hikiln::cfd::smoothCellColour", cellSplit(op), colour,
-                           StencilGaussSeidel<Stencil>{{op, x, affine}, f});
-  });
+  detail::smoothCell(space, op, x, f, colour, false, affine);
 }
 
 /// \brief A red-black Gauss-Seidel sweep for A x = f: colour `first`, then the other, as two
@@ -199,13 +210,7 @@ template <class ExecutionSpace, class MemorySpace>
 void smoothCellRedBlack(ExecutionSpace const& space, CellOperator<MemorySpace> const& op,
                         Field<MemorySpace> const& x, Field<MemorySpace> const& f, int first,
                         bool affine) {
-  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
-                "hikiln::cfd::smoothCellRedBlack: fields not accessible from the execution space");
-  detail::withCellForm(op, [&](auto dims, auto alpha) {
-    using Stencil = detail::CellStencilOf<MemorySpace, decltype(dims), decltype(alpha)>;
-    forEachSplitRedBlackCell(space, "hikiln::cfd::smoothCellRedBlack", cellSplit(op), first,
-                             StencilGaussSeidel<Stencil>{{op, x, affine}, f});
-  });
+  detail::smoothCell(space, op, x, f, first, true, affine);
 }
 
 /// \brief Harmonic mean 2 a b / (a + b) of two positive coefficients (0 if both are 0).

@@ -220,6 +220,13 @@ template <class Body> struct SplitBoxRedBlack {
   int rowsPerPlane, planes, chunks;
   bool edges = false; ///< the second launch: the chunks' first and last planes' second colour
 
+  /// maxChunks > 0; a chunk has one plane at least.
+  SplitBoxRedBlack(Body const& body, BoxSplit const& split, int firstColour, int maxChunks)
+      : first{body, SplitRows(split), firstColour}, second{body, SplitRows(split), 1 - firstColour},
+        rowsPerPlane(split.hi[2] - split.lo[2] > 1 ? first.rows.box.nj : 1),
+        planes(split.hi[2] - split.lo[2] > 1 ? split.hi[2] - split.lo[2] : first.rows.box.nj),
+        chunks(math::min(maxChunks, planes)) {}
+
   KOKKOS_FORCEINLINE_FUNCTION void plane(SplitBoxRows<Body, true> const& walk, int p) const {
     for (int row = p * rowsPerPlane; row < (p + 1) * rowsPerPlane; ++row) {
       walk(row);
@@ -377,13 +384,8 @@ void forEachSplitRedBlackCell(ExecutionSpace const& space, std::string const& la
     if (split.size() == 0) {
       return;
     }
-    const detail::SplitRows rows(split);
-    const int nk = split.hi[2] - split.lo[2];
-    detail::SplitBoxRedBlack<Body> sweep{
-        {body, rows, first}, {body, rows, 1 - first}, nk > 1 ? rows.box.nj : 1, 0, 0};
-    sweep.planes = nk > 1 ? nk : rows.box.nj;
-    sweep.chunks =
-        math::min(chunks > 0 ? chunks : static_cast<int>(space.concurrency()), sweep.planes);
+    detail::SplitBoxRedBlack<Body> sweep(
+        body, split, first, chunks > 0 ? chunks : static_cast<int>(space.concurrency()));
     const Kokkos::RangePolicy<ExecutionSpace> policy(space, 0, sweep.chunks);
     Kokkos::parallel_for(label, policy, sweep);
     sweep.edges = true;
@@ -392,6 +394,18 @@ void forEachSplitRedBlackCell(ExecutionSpace const& space, std::string const& la
     (void)chunks;
     forEachSplitColourCell(space, label, split, first, body);
     forEachSplitColourCell(space, label, split, 1 - first, body);
+  }
+}
+
+/// \brief The smoothers' sweep: forEachSplitRedBlackCell from `colour` (both) or
+/// forEachSplitColourCell of `colour` alone, labelled "<label>RedBlack" or "<label>Colour".
+template <class ExecutionSpace, class Body>
+void forEachSplitSweepCell(ExecutionSpace const& space, std::string const& label,
+                           BoxSplit const& split, int colour, bool both, Body const& body) {
+  if (both) {
+    forEachSplitRedBlackCell(space, label + "RedBlack", split, colour, body);
+  } else {
+    forEachSplitColourCell(space, label + "Colour", split, colour, body);
   }
 }
 

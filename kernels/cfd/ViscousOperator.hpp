@@ -277,14 +277,8 @@ void smoothViscousComponent(ExecutionSpace const& space, ViscousOperator<MemoryS
                             bool affine) {
   withViscousForm(op, [&](auto alpha, auto masks) {
     using Stencil = ViscousStencilOf<Dims, C, MemorySpace, decltype(alpha), decltype(masks)>;
-    const StencilGaussSeidel<Stencil> body{{op, u, affine}, f.comp[C]};
-    if (both) {
-      forEachSplitRedBlackCell(space, "hikiln::cfd::smoothViscousRedBlack", componentSplit(op, C),
-                               colour, body);
-    } else {
-      forEachSplitColourCell(space, "hikiln::cfd::smoothViscousColour", componentSplit(op, C),
-                             colour, body);
-    }
+    forEachSplitSweepCell(space, "hikiln::cfd::smoothViscous", componentSplit(op, C), colour, both,
+                          StencilGaussSeidel<Stencil>{{op, u, affine}, f.comp[C]});
   });
 }
 
