@@ -63,47 +63,17 @@ public:
   CellMultigrid(ExecutionSpace const& space, Grid const& grid, ScalarBoundaries const& bc,
                 field_type const& alpha, field_type const (&beta)[3],
                 MultigridOptions const& options = MultigridOptions(),
-                field_type const& open = field_type())
-      : _space(space), _bc(bc), _options(options) {
-    checkBoundaries(grid, bc);
-    setupLevels(grid, alpha, beta, open);
-    refresh();
-  }
+                field_type const& open = field_type());
 
   /// \brief Takes the current values of the referenced fine coefficients (alpha, beta, open):
   /// coarsens them again and rebuilds the coarsest level's solve, in the fields allocated at
   /// construction. A solver kept across time steps (TwoPhaseSolver) saves allocating and
   /// zeroing its hierarchy every step.
-  void refresh() {
-    coarsenCoefficients();
-    setupOpenNullVector();
-    setupCoarseSolve();
-  }
+  void refresh();
 
   /// \brief Solves A x = f by V-cycles from the initial guess x (boundary values included);
   /// stops at ||f - A x|| <= tolerance * ||f - A x_0|| or after maxIterations cycles.
-  SolveStats solve(field_type const& x, field_type const& f) {
-    const field_type rhs = consistentRhs(f);
-    Level& fine = _levels.front();
-    SolveStats stats;
-    stats.initialResidual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, fine.res, true));
-    stats.referenceResidual = stats.initialResidual;
-    stats.history.push_back(stats.initialResidual);
-    double residual = stats.initialResidual;
-    while (residual > _options.tolerance * stats.initialResidual &&
-           stats.iterations < _options.maxIterations) {
-      cycle(0, x, rhs, true);
-      residual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, fine.res, true));
-      stats.history.push_back(residual);
-      ++stats.iterations;
-    }
-    if (_singular) {
-      removeMean(_space, fine.box, x);
-    }
-    stats.finalResidual = residual;
-    stats.converged = residual <= _options.tolerance * stats.initialResidual;
-    return stats;
-  }
+  SolveStats solve(field_type const& x, field_type const& f);
 
   /// \brief Solves A x = f by conjugate gradients preconditioned with one V-cycle per
   /// iteration (flexible Polak-Ribiere update, as the default V-cycle is not exactly
@@ -111,66 +81,17 @@ public:
   /// reference is the initial residual, or the given one when > 0: a warm start then stops
   /// where a colder start would have (the caller measures that start's residual with
   /// residualNorm).
-  SolveStats solvePcg(field_type const& x, field_type const& f, double reference = 0.0) {
-    allocateKrylov();
-    const field_type rhs = consistentRhs(f);
-    Level& fine = _levels.front();
-    const UnknownBox& box = fine.box;
-    SolveStats stats;
-    stats.initialResidual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, _r, true));
-    stats.history.push_back(stats.initialResidual);
-    stats.referenceResidual = reference > 0.0 ? reference : stats.initialResidual;
-    const double target = _options.tolerance * stats.referenceResidual;
-    double residual = stats.initialResidual;
-    removeNullComponent(_r);
-    if (residual > target) {
-      precondition(_r, _z);
-      axpbyUnknowns(_space, box, 1.0, _z, 0.0, _p);
-      double rz = dotUnknowns(_space, box, _r, _z);
-      while (residual > target && stats.iterations < _options.maxIterations) {
-        applyCellOperator(_space, fine.op, _p, _q, false);
-        const double step = rz / dotUnknowns(_space, box, _p, _q);
-        axpbyUnknowns(_space, box, step, _p, 1.0, x);
-        axpbyUnknowns(_space, box, -step, _q, 1.0, _r);
-        removeNullComponent(_r);
-        residual = std::sqrt(dotUnknowns(_space, box, _r, _r));
-        stats.history.push_back(residual);
-        ++stats.iterations;
-        if (residual <= target) {
-          break;
-        }
-        // flexible (Polak-Ribiere) beta: robust when the V-cycle is not exactly symmetric
-        const double rzOld = dotUnknowns(_space, box, _r, _z);
-        precondition(_r, _z);
-        const double rzNew = dotUnknowns(_space, box, _r, _z);
-        axpbyUnknowns(_space, box, 1.0, _z, (rzNew - rzOld) / rz, _p);
-        rz = rzNew;
-      }
-    }
-    if (_singular) {
-      removeMean(_space, box, x);
-    }
-    stats.converged = residual <= target;
-    stats.finalResidual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, _q, true));
-    return stats;
-  }
+  SolveStats solvePcg(field_type const& x, field_type const& f, double reference = 0.0);
 
   /// \brief One V-cycle on A x = f (affine: boundary values included, as in a solve).
-  void vcycle(field_type const& x, field_type const& f, bool affine) { cycle(0, x, f, affine); }
+  void vcycle(field_type const& x, field_type const& f, bool affine);
 
   /// \brief z = M^-1 r: one V-cycle from zero on the linear operator (zero mean if singular).
-  void precondition(field_type const& r, field_type const& z) {
-    Kokkos::deep_copy(_space, z, 0.0);
-    cycle(0, z, r, false);
-    removeNullComponent(z);
-  }
+  void precondition(field_type const& r, field_type const& z);
 
   /// \brief ||f - A x|| over the cells (affine; f as the solves take it), using an internal
   /// buffer.
-  double residualNorm(field_type const& x, field_type const& f) {
-    Level& fine = _levels.front();
-    return std::sqrt(cellResidualNorm2(_space, fine.op, x, consistentRhs(f), fine.res, true));
-  }
+  double residualNorm(field_type const& x, field_type const& f);
 
   /// \brief Number of levels (1 when the finest grid is solved directly).
   int numLevels() const { return static_cast<int>(_levels.size()); }
@@ -415,5 +336,125 @@ private:
   double _openCount = 0.0; ///< their number when singular on them, else 0
   field_type _rhs0, _r, _z, _p, _q;
 };
+
+// The members that reach the kernels are defined out of the class, so that the explicit
+// instantiation declarations below keep them out of every file that uses the solver: they are
+// compiled once per backend in hikiln_cfd (solvers/cfd/CMakeLists.txt).
+
+template <class ExecutionSpace>
+CellMultigrid<ExecutionSpace>::CellMultigrid(ExecutionSpace const& space, Grid const& grid,
+                                             ScalarBoundaries const& bc, field_type const& alpha,
+                                             field_type const (&beta)[3],
+                                             MultigridOptions const& options,
+                                             field_type const& open)
+    : _space(space), _bc(bc), _options(options) {
+  checkBoundaries(grid, bc);
+  setupLevels(grid, alpha, beta, open);
+  refresh();
+}
+
+template <class ExecutionSpace> void CellMultigrid<ExecutionSpace>::refresh() {
+  coarsenCoefficients();
+  setupOpenNullVector();
+  setupCoarseSolve();
+}
+
+template <class ExecutionSpace>
+SolveStats CellMultigrid<ExecutionSpace>::solve(field_type const& x, field_type const& f) {
+  const field_type rhs = consistentRhs(f);
+  Level& fine = _levels.front();
+  SolveStats stats;
+  stats.initialResidual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, fine.res, true));
+  stats.referenceResidual = stats.initialResidual;
+  stats.history.push_back(stats.initialResidual);
+  double residual = stats.initialResidual;
+  while (residual > _options.tolerance * stats.initialResidual &&
+         stats.iterations < _options.maxIterations) {
+    cycle(0, x, rhs, true);
+    residual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, fine.res, true));
+    stats.history.push_back(residual);
+    ++stats.iterations;
+  }
+  if (_singular) {
+    removeMean(_space, fine.box, x);
+  }
+  stats.finalResidual = residual;
+  stats.converged = residual <= _options.tolerance * stats.initialResidual;
+  return stats;
+}
+
+template <class ExecutionSpace>
+SolveStats CellMultigrid<ExecutionSpace>::solvePcg(field_type const& x, field_type const& f,
+                                                   double reference) {
+  allocateKrylov();
+  const field_type rhs = consistentRhs(f);
+  Level& fine = _levels.front();
+  const UnknownBox& box = fine.box;
+  SolveStats stats;
+  stats.initialResidual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, _r, true));
+  stats.history.push_back(stats.initialResidual);
+  stats.referenceResidual = reference > 0.0 ? reference : stats.initialResidual;
+  const double target = _options.tolerance * stats.referenceResidual;
+  double residual = stats.initialResidual;
+  removeNullComponent(_r);
+  if (residual > target) {
+    precondition(_r, _z);
+    axpbyUnknowns(_space, box, 1.0, _z, 0.0, _p);
+    double rz = dotUnknowns(_space, box, _r, _z);
+    while (residual > target && stats.iterations < _options.maxIterations) {
+      applyCellOperator(_space, fine.op, _p, _q, false);
+      const double step = rz / dotUnknowns(_space, box, _p, _q);
+      axpbyUnknowns(_space, box, step, _p, 1.0, x);
+      axpbyUnknowns(_space, box, -step, _q, 1.0, _r);
+      removeNullComponent(_r);
+      residual = std::sqrt(dotUnknowns(_space, box, _r, _r));
+      stats.history.push_back(residual);
+      ++stats.iterations;
+      if (residual <= target) {
+        break;
+      }
+      // flexible (Polak-Ribiere) beta: robust when the V-cycle is not exactly symmetric
+      const double rzOld = dotUnknowns(_space, box, _r, _z);
+      precondition(_r, _z);
+      const double rzNew = dotUnknowns(_space, box, _r, _z);
+      axpbyUnknowns(_space, box, 1.0, _z, (rzNew - rzOld) / rz, _p);
+      rz = rzNew;
+    }
+  }
+  if (_singular) {
+    removeMean(_space, box, x);
+  }
+  stats.converged = residual <= target;
+  stats.finalResidual = std::sqrt(cellResidualNorm2(_space, fine.op, x, rhs, _q, true));
+  return stats;
+}
+
+template <class ExecutionSpace>
+void CellMultigrid<ExecutionSpace>::vcycle(field_type const& x, field_type const& f, bool affine) {
+  cycle(0, x, f, affine);
+}
+
+template <class ExecutionSpace>
+void CellMultigrid<ExecutionSpace>::precondition(field_type const& r, field_type const& z) {
+  Kokkos::deep_copy(_space, z, 0.0);
+  cycle(0, z, r, false);
+  removeNullComponent(z);
+}
+
+template <class ExecutionSpace>
+double CellMultigrid<ExecutionSpace>::residualNorm(field_type const& x, field_type const& f) {
+  Level& fine = _levels.front();
+  return std::sqrt(cellResidualNorm2(_space, fine.op, x, consistentRhs(f), fine.res, true));
+}
+
+#ifdef KOKKOS_ENABLE_SERIAL
+extern template class CellMultigrid<Kokkos::Serial>;
+#endif
+#ifdef KOKKOS_ENABLE_OPENMP
+extern template class CellMultigrid<Kokkos::OpenMP>;
+#endif
+#ifdef KOKKOS_ENABLE_CUDA
+extern template class CellMultigrid<Kokkos::Cuda>;
+#endif
 
 } // namespace hikiln::cfd

@@ -61,6 +61,7 @@
 #include "kernels/cfd/GhostFill.hpp"
 #include "kernels/cfd/GranularRheology.hpp"
 #include "kernels/cfd/Grid.hpp"
+#include "kernels/cfd/KilnGeometry.hpp"
 #include "kernels/cfd/OpenEndKernels.hpp"
 #include "kernels/cfd/ProjectionKernels.hpp"
 #include "kernels/cfd/ShellGeometry.hpp"
@@ -188,79 +189,7 @@ public:
   /// closed or with open ends (OpenSides).
   TwoPhaseSolver(ExecutionSpace const& space, Grid const& grid, Shape const& shape,
                  TwoPhaseParameters const& params, CutCellOptions const& cutOptions = {},
-                 OpenSides const& openSides = {})
-      : _space(space), _grid(grid), _shape(shape), _params(params), _open(openSides) {
-    params.validate();
-    for (int a = 0; a < 3; ++a) {
-      _periodic[a] = cutOptions.periodic[a] || (a == 2 && !grid.is3D());
-    }
-    validateOpenSides();
-    CutCellOptions options = cutOptions;
-    options.periodic[2] = _periodic[2];
-    for (int side = 0; side < 6; ++side) {
-      options.open[side] = _open.kind[side] != BoundaryKind::Wall;
-    }
-    _cutOptions = options;
-    _cut = buildCutCells(space, grid, shape, options);
-    for (int side = 0; side < 6; ++side) {
-      const bool per = _periodic[side / 2];
-      const BoundaryKind end = _open.kind[side];
-      _pressureBc.kind[side] =
-          per ? BoundaryKind::Periodic
-              : (end == BoundaryKind::Outflow ? BoundaryKind::Value : BoundaryKind::Wall);
-      _velocityBc.kind[side] = per ? BoundaryKind::Periodic : end;
-      // heat leaves and enters an open end with the flow only: no diffusive flux there
-      _heatBc.kind[side] = per ? BoundaryKind::Periodic : BoundaryKind::Wall;
-    }
-    const auto cellField = [&](char const* label) {
-      return makeField(space, grid, Staggering::Cell, label);
-    };
-    _phi = cellField("hikiln::cfd::phi");
-    _p = cellField("hikiln::cfd::p");
-    _pBed = cellField("hikiln::cfd::pBed");
-    _rho = cellField("hikiln::cfd::rho");
-    _mu = cellField("hikiln::cfd::mu");
-    _gammaDot = cellField("hikiln::cfd::gammaDot");
-    _div = cellField("hikiln::cfd::div");
-    _pAlpha = cellField("hikiln::cfd::pAlpha");
-    if (params.energy) {
-      params.thermal.validate("hikiln::cfd::TwoPhaseParameters");
-      _T = cellField("hikiln::cfd::T");
-      allocateHeatWork();
-    }
-    for (int a = 0; a < 3; ++a) {
-      const Staggering s = faceStaggering(a);
-      _u.comp[a] = makeField(space, grid, s, "hikiln::cfd::u");
-      _uStar.comp[a] = makeField(space, grid, s, "hikiln::cfd::uStar");
-      _rhs.comp[a] = makeField(space, grid, s, "hikiln::cfd::rhs");
-      _alpha[a] = makeField(space, grid, s, "hikiln::cfd::alpha");
-      _rhoFace[a] = makeField(space, grid, s, "hikiln::cfd::rhoFace");
-      _beta[a] = makeField(space, grid, s, "hikiln::cfd::beta");
-      if (params.incrementalProjection) {
-        _accel.comp[a] = makeField(space, grid, s, "hikiln::cfd::accel");
-      }
-      if (params.warmStart) {
-        _predictorChange.comp[a] = makeField(space, grid, s, "hikiln::cfd::predictorChange");
-      }
-    }
-    if (params.warmStart) {
-      _zeroCells = cellField("hikiln::cfd::zeroCells");
-    }
-    _fct = makeFctWork(space, grid);
-    for (int a = 0; a < 3; ++a) {
-      _cells.lo[a] = 0;
-      _cells.hi[a] = grid.cells(a);
-    }
-    _cells.offsets = ghostOffsets(grid);
-    if (_open.has(BoundaryKind::Inflow)) {
-      _inflowW = makeField(space, grid, faceStaggering(2), "hikiln::cfd::inflowW");
-      _inflowPhi = makeField(space, grid, faceStaggering(2), "hikiln::cfd::inflowPhi");
-    }
-    if (_open.has(BoundaryKind::Outflow)) {
-      _gasHead = cellField("hikiln::cfd::gasHead");
-      gasHead(space, grid, params.gasDensity, params.gravity, _gasHead);
-    }
-  }
+                 OpenSides const& openSides = {});
 
   /// \brief Sets what flows in through the Inflow sides: on each open boundary face, the speed
   /// into the domain inflow.axialVelocity(x, y) and the solids fraction inflow.inflowPhi(x, y)
@@ -294,14 +223,7 @@ public:
   /// phi keeps its value where the fluid stays and counts for nothing where the new shape is
   /// solid; u is made divergence-free with the new apertures (a projection without gravity).
   /// Returns the solids content the new walls took (solids() units).
-  double changeShape(Shape const& shape) {
-    const double before = solids();
-    _shape = shape;
-    _cut = buildCutCells(_space, _grid, shape, _cutOptions);
-    imposeInflow(_u.comp[2]);
-    makeDivergenceFree();
-    return before - solids();
-  }
+  double changeShape(Shape const& shape);
 
   /// \brief Solids carried in through the Inflow sides and out through the Outflow sides since
   /// the start (solids() units).
@@ -314,42 +236,14 @@ public:
 
   /// \brief Sets phi = phiMax x the fraction of each fluid cell below the plane y = level (a flat
   /// bed at rest), u = 0 and p to the hydrostatic pressure of that bed.
-  void setFlatBed(double level) {
-    const Grid grid = _grid;
-    const int g = grid.ghost, gz = grid.ghostZ();
-    const double phiMax = _params.rheology.phiMax;
-    const auto vol = _cut.capacity;
-    const auto phi = _phi;
-    Kokkos::parallel_for(
-        "hikiln::cfd::setFlatBed", gridPolicy(_space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
-        KOKKOS_LAMBDA(const int i, const int j, const int k) {
-          const double y0 = grid.y0 + j * grid.hy;
-          const double below = math::fmin(math::fmax((level - y0) / grid.hy, 0.0), 1.0);
-          phi(i + g, j + g, k + gz) = vol(i + g, j + g, k + gz) > 0.0 ? phiMax * below : 0.0;
-        });
-    for (int a = 0; a < 3; ++a) {
-      Kokkos::deep_copy(_space, _u.comp[a], 0.0);
-    }
-    hydrostaticPressure();
-    if (_inflowSet) {
-      startInflow();
-    }
-  }
+  void setFlatBed(double level);
 
   /// \brief Sets phi = phiMax in every fluid cell (a full drum), u = 0, hydrostatic p.
   void setFull() { setFlatBed(_grid.y0 + 2.0 * _grid.ny * _grid.hy); }
 
   /// \brief p such that the gravity g - grad p / rho is discretely divergence-free (a projection
   /// of gravity; exactly hydrostatic for a layered density).
-  void hydrostaticPressure() {
-    updateDensity();
-    for (int c = 0; c < dims(); ++c) {
-      Kokkos::deep_copy(_space, _uStar.comp[c], 0.0);
-    }
-    addGravity(_space, _cut, _params.gravity, 1.0, _uStar);
-    Kokkos::deep_copy(_space, _p, 0.0);
-    project(1.0, _uStar, _p, true, false);
-  }
+  void hydrostaticPressure();
 
   /// \brief The largest stable step and what limits it.
   double stableTimeStep(std::string& reason) {
@@ -374,117 +268,7 @@ public:
   }
 
   /// \brief One step of length dt (see the file comment).
-  TwoPhaseStepReport step(double dt) {
-    TwoPhaseStepReport report;
-    report.dt = dt;
-    report.limitedBy = "given";
-    const RheologyView rh = rheologyView();
-    report.solidsBefore = solidsContent(_space, _cut, _phi);
-    if (_params.energy) {
-      report.heatBefore = heat();
-    }
-    if (_phiOld.extent(0) > 0) {
-      Kokkos::deep_copy(_space, _phiOld, _phi);
-    }
-    if (_open.has(BoundaryKind::Inflow) || _open.has(BoundaryKind::Outflow)) {
-      fillOpenEndGhosts();
-    }
-    report.transportSubsteps = transportVolumeFractionInSubsteps(
-        _space, _cut, _u, settling().v, dt, rh.phiMax, _params.cfl, _phi, _fct);
-    report.solidsAfter = solidsContent(_space, _cut, _phi);
-    for (int side : {ZLow, ZHigh}) {
-      if (_open.kind[side] == BoundaryKind::Wall) {
-        continue;
-      }
-      // the flux along +z leaves the domain at the high side and enters it at the low side
-      const double outward =
-          (side == ZHigh ? 1.0 : -1.0) * boundarySolidsFlux(_space, _cut, _fct, side);
-      if (_open.kind[side] == BoundaryKind::Outflow) {
-        report.solidsOut += outward;
-      } else {
-        report.solidsIn -= outward;
-      }
-    }
-    _solidsIn += report.solidsIn;
-    _solidsOut += report.solidsOut;
-    if (_params.energy) {
-      const HeatStep h = energyStep(dt, _T, _params.thermal, _inflowT);
-      report.energy = h.solve;
-      report.heatSubsteps = h.substeps;
-      report.heatIn = h.in;
-      report.heatOut = h.out;
-      report.heatFromShell = h.shell;
-      report.heatAfter = heat();
-    }
-    for (TemperatureTracer& tracer : _tracers) {
-      const HeatStep h = energyStep(dt, tracer.temperature, tracer.thermal, tracer.inflow);
-      tracer.lastIn = h.in;
-      tracer.lastOut = h.out;
-    }
-    updateDensity();
-    updateViscosity();
-    // momentum predictor with implicit viscosity
-    for (int c = 0; c < dims(); ++c) {
-      fillGhostsVelocity(_space, _grid, _velocityBc, c, _u.comp[c]);
-    }
-    const double muMax = maxAbsUnknowns(_space, _cells, _mu);
-    const WallFriction friction = wallFriction();
-    for (int c = 0; c < dims(); ++c) {
-      momentumPredictor(_space, _cut, _shape, c, _u, _rhoFace[c], dt, _params.penalty, muMax,
-                        friction, _pBed, _alpha[c], _rhs.comp[c], _uStar.comp[c]);
-      if (_params.incrementalProjection) {
-        addCarriedAcceleration(_space, _cut, c, _rhoFace[c], _accel.comp[c], _rhs.comp[c]);
-      }
-    }
-    // the open ends' normal velocities are data of the solve: u^n's (inflow given, outflow
-    // from the last projection)
-    copyEndNodes(_u.comp[2], _uStar.comp[2]);
-    const auto viscousStart = startSolveClock();
-    ViscousMultigrid<ExecutionSpace>& viscous = keptMultigrid(_momentumMg, [&] {
-      return std::make_unique<ViscousMultigrid<ExecutionSpace>>(
-          _space, _grid, _velocityBc, _alpha, _mu, multigridOptions(_params.viscousTolerance),
-          wallLawApertures());
-    });
-    const double coldResidual = warmMomentumStart(viscous, dt);
-    report.viscous = viscous.solvePcg(_uStar, _rhs, coldResidual);
-    if (_params.warmStart) {
-      viscous.axpby(1.0, _uStar, 1.0, _predictorChange); // u* less the cold guess
-    }
-    report.viscous.seconds = elapsedSince(viscousStart);
-    if constexpr (HasAxis<Shape>::value) {
-      // the shell's drag acts on the predicted velocity (shellTorque)
-      if (!_grid.is3D()) {
-        _dragTorque = shellTorqueOf(_uStar, dt);
-      }
-    }
-    if (!report.viscous.converged) {
-      throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: momentum solve did not converge (" +
-                               std::to_string(report.viscous.iterations) + " iterations)");
-    }
-    if (_params.incrementalProjection) {
-      for (int c = 0; c < dims(); ++c) {
-        removeCarriedAcceleration(_space, _cut, c, dt, _accel.comp[c], _uStar.comp[c]);
-      }
-    }
-    if (_open.has(BoundaryKind::Outflow)) {
-      extrapolateOutflow(_uStar.comp[2]);
-    }
-    addGravity(_space, _cut, _params.gravity, dt, _uStar);
-    report.pressure = project(dt, _uStar, _p);
-    if (_params.incrementalProjection) {
-      for (int c = 0; c < dims(); ++c) {
-        updateCarriedAcceleration(_space, _cut, c, dt, _uStar.comp[c], _accel.comp[c]);
-      }
-    }
-    for (int c = 0; c < dims(); ++c) {
-      Kokkos::deep_copy(_space, _u.comp[c], _uStar.comp[c]);
-    }
-    apertureDivergence(_space, _cut, _u, _div);
-    report.maxDivergence = maxAbsUnknowns(_space, _cells, _div);
-    _time += dt;
-    _lastDt = dt;
-    return report;
-  }
+  TwoPhaseStepReport step(double dt);
 
   /// \brief The momentum solve's start: the predictor's cold guess (u^n, the shell's velocity on
   /// faces it closes in part) in _uStar, moved by what the last solve added to its own cold
@@ -554,7 +338,8 @@ public:
   double tracerOutLastStep(int n) const { return _tracers.at(n).lastOut; }
 
   /// \brief The torque budget about the shell's axis of the last step, per metre of drum (2D
-  /// drums only, all 0 in 3D or before the first step; ShellTorque.hpp).
+  /// drums only, all 0 in 3D, for a shape without an axis or before the first step;
+  /// ShellTorque.hpp).
   ShellTorque shellTorque() const {
     if (_grid.is3D() || !(_lastDt > 0.0)) {
       return ShellTorque();
@@ -572,65 +357,12 @@ public:
   /// its centre against omega r there, weighted by capacity x phi. A cell's velocity component
   /// is the aperture-weighted mean of its two faces: a closed face is held at the shell
   /// velocity and is not bed, so it does not count (a cell with no open face along an axis is
-  /// skipped). NaN when the shell does not turn or no bed touches it. Needs a DrumShell-like
-  /// shape (cx, cy, omega).
-  double wallSlip() {
-    if (_shape.omega == 0.0) {
-      return std::nan("");
-    }
-    const Grid grid = _grid;
-    const int g = grid.ghost, gz = grid.ghostZ();
-    const auto cap = _cut.capacity;
-    const auto wall = _cut.wallLayer;
-    const auto phi = _phi;
-    const auto u = _u.comp[0], v = _u.comp[1];
-    const auto au = _cut.aperture[0], av = _cut.aperture[1];
-    const double half = 0.5 * _params.rheology.phiMax;
-    const double cx = _shape.cx, cy = _shape.cy, omega = _shape.omega;
-    double sum = 0.0, weight = 0.0;
-    Kokkos::parallel_reduce(
-        "hikiln::cfd::wallSlip", gridPolicy(_space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
-        KOKKOS_LAMBDA(const int i, const int j, const int k, double& s, double& w) {
-          const int I = i + g, J = j + g, K = k + gz;
-          if (wall(I, J, K) <= 0.0 || phi(I, J, K) < half) {
-            return;
-          }
-          const double openU = au(I, J, K) + au(I + 1, J, K);
-          const double openV = av(I, J, K) + av(I, J + 1, K);
-          if (openU <= 0.0 || openV <= 0.0) {
-            return;
-          }
-          const double x = grid.coordinate(Staggering::Cell, 0, i) - cx;
-          const double y = grid.coordinate(Staggering::Cell, 1, j) - cy;
-          const double r = math::sqrt(x * x + y * y);
-          const double uc = (au(I, J, K) * u(I, J, K) + au(I + 1, J, K) * u(I + 1, J, K)) / openU;
-          const double vc = (av(I, J, K) * v(I, J, K) + av(I, J + 1, K) * v(I, J + 1, K)) / openV;
-          const double bed = cap(I, J, K) * phi(I, J, K);
-          s += bed * (-y * uc + x * vc) / (r * omega * r);
-          w += bed;
-        },
-        sum, weight);
-    return weight > 0.0 ? 1.0 - sum / weight : std::nan("");
-  }
+  /// skipped). NaN when the shell does not turn, no bed touches it or the shape has no axis
+  /// (a DrumShell-like shape has cx, cy, omega).
+  double wallSlip();
 
   /// \brief Smallest and largest phi over fluid cells.
-  void phiRange(double& lo, double& hi) {
-    const Grid grid = _grid;
-    const int g = grid.ghost, gz = grid.ghostZ();
-    const auto vol = _cut.capacity;
-    const auto phi = _phi;
-    lo = 0.0;
-    hi = 0.0;
-    Kokkos::parallel_reduce(
-        "hikiln::cfd::phiRange", gridPolicy(_space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
-        KOKKOS_LAMBDA(const int i, const int j, const int k, double& mn, double& mx) {
-          if (vol(i + g, j + g, k + gz) > 0.0) {
-            mn = math::fmin(mn, phi(i + g, j + g, k + gz));
-            mx = math::fmax(mx, phi(i + g, j + g, k + gz));
-          }
-        },
-        Kokkos::Min<double>(lo), Kokkos::Max<double>(hi));
-  }
+  void phiRange(double& lo, double& hi);
 
   int dims() const { return _grid.is3D() ? 3 : 2; }
   double time() const { return _time; }
@@ -654,6 +386,9 @@ private:
     double phiMax;
   };
   RheologyView rheologyView() const { return RheologyView{_params.rheology.phiMax}; }
+  field_type cellField(char const* label) const {
+    return makeField(_space, _grid, Staggering::Cell, label);
+  }
 
   /// \brief The settling velocity vector: settlingVelocity along gravity.
   Settling settling() const {
@@ -676,9 +411,6 @@ private:
     if (_Tstar.extent(0) > 0) {
       return;
     }
-    const auto cellField = [&](char const* label) {
-      return makeField(_space, _grid, Staggering::Cell, label);
-    };
     _Tstar = cellField("hikiln::cfd::Tstar");
     _phiOld = cellField("hikiln::cfd::phiOld");
     _kappa = cellField("hikiln::cfd::kappa");
@@ -772,11 +504,13 @@ private:
 
   /// ShellTorque.hpp's budget with the drag on velocity u and the last predictor's alpha.
   ShellTorque shellTorqueOf(velocity_type const& u, double dt) const {
-    ShellTorque sum;
-    for (int c = 0; c < 2; ++c) {
-      sum += shellTorqueOfComponent(_space, _cut, _shape, c, u.comp[c], _rhoFace[c], _alpha[c], _p,
-                                    _pBed, _params.gravity[c], dt, wallFriction(),
-                                    _params.incrementalProjection);
+    ShellTorque sum; // all 0 for a shape without an axis
+    if constexpr (HasAxis<Shape>::value) {
+      for (int c = 0; c < 2; ++c) {
+        sum += shellTorqueOfComponent(_space, _cut, _shape, c, u.comp[c], _rhoFace[c], _alpha[c],
+                                      _p, _pBed, _params.gravity[c], dt, wallFriction(),
+                                      _params.incrementalProjection);
+      }
     }
     return sum;
   }
@@ -803,10 +537,7 @@ private:
   /// \brief u at rest but for the given inflow, made divergence-free (a projection without
   /// gravity, the potential kept apart from p): the volume-fraction transport is bounded only
   /// with divergence-free fluxes.
-  void startInflow() {
-    imposeInflow(_u.comp[2]);
-    makeDivergenceFree();
-  }
+  void startInflow();
 
   /// \brief Projects u without gravity, the potential kept apart from p.
   void makeDivergenceFree() {
@@ -1003,5 +734,325 @@ private:
   double _lastDt = 0.0;    ///< of the last step (shellTorque)
   ShellTorque _dragTorque; ///< the shell's drag on the last predicted velocity
 };
+
+// The members that reach the kernels and the multigrids are defined out of the class, so that
+// the explicit instantiation declarations below keep them out of every file that uses the drum's
+// or the kiln's solver: they are compiled once per backend in hikiln_cfd
+// (solvers/cfd/CMakeLists.txt).
+
+template <class ExecutionSpace, class Shape>
+TwoPhaseSolver<ExecutionSpace, Shape>::TwoPhaseSolver(ExecutionSpace const& space, Grid const& grid,
+                                                      Shape const& shape,
+                                                      TwoPhaseParameters const& params,
+                                                      CutCellOptions const& cutOptions,
+                                                      OpenSides const& openSides)
+    : _space(space), _grid(grid), _shape(shape), _params(params), _open(openSides) {
+  params.validate();
+  for (int a = 0; a < 3; ++a) {
+    _periodic[a] = cutOptions.periodic[a] || (a == 2 && !grid.is3D());
+  }
+  validateOpenSides();
+  CutCellOptions options = cutOptions;
+  options.periodic[2] = _periodic[2];
+  for (int side = 0; side < 6; ++side) {
+    options.open[side] = _open.kind[side] != BoundaryKind::Wall;
+  }
+  _cutOptions = options;
+  _cut = buildCutCells(space, grid, shape, options);
+  for (int side = 0; side < 6; ++side) {
+    const bool per = _periodic[side / 2];
+    const BoundaryKind end = _open.kind[side];
+    _pressureBc.kind[side] =
+        per ? BoundaryKind::Periodic
+            : (end == BoundaryKind::Outflow ? BoundaryKind::Value : BoundaryKind::Wall);
+    _velocityBc.kind[side] = per ? BoundaryKind::Periodic : end;
+    // heat leaves and enters an open end with the flow only: no diffusive flux there
+    _heatBc.kind[side] = per ? BoundaryKind::Periodic : BoundaryKind::Wall;
+  }
+  _phi = cellField("hikiln::cfd::phi");
+  _p = cellField("hikiln::cfd::p");
+  _pBed = cellField("hikiln::cfd::pBed");
+  _rho = cellField("hikiln::cfd::rho");
+  _mu = cellField("hikiln::cfd::mu");
+  _gammaDot = cellField("hikiln::cfd::gammaDot");
+  _div = cellField("hikiln::cfd::div");
+  _pAlpha = cellField("hikiln::cfd::pAlpha");
+  if (params.energy) {
+    params.thermal.validate("hikiln::cfd::TwoPhaseParameters");
+    _T = cellField("hikiln::cfd::T");
+    allocateHeatWork();
+  }
+  for (int a = 0; a < 3; ++a) {
+    const Staggering s = faceStaggering(a);
+    _u.comp[a] = makeField(space, grid, s, "hikiln::cfd::u");
+    _uStar.comp[a] = makeField(space, grid, s, "hikiln::cfd::uStar");
+    _rhs.comp[a] = makeField(space, grid, s, "hikiln::cfd::rhs");
+    _alpha[a] = makeField(space, grid, s, "hikiln::cfd::alpha");
+    _rhoFace[a] = makeField(space, grid, s, "hikiln::cfd::rhoFace");
+    _beta[a] = makeField(space, grid, s, "hikiln::cfd::beta");
+    if (params.incrementalProjection) {
+      _accel.comp[a] = makeField(space, grid, s, "hikiln::cfd::accel");
+    }
+    if (params.warmStart) {
+      _predictorChange.comp[a] = makeField(space, grid, s, "hikiln::cfd::predictorChange");
+    }
+  }
+  if (params.warmStart) {
+    _zeroCells = cellField("hikiln::cfd::zeroCells");
+  }
+  _fct = makeFctWork(space, grid);
+  for (int a = 0; a < 3; ++a) {
+    _cells.lo[a] = 0;
+    _cells.hi[a] = grid.cells(a);
+  }
+  _cells.offsets = ghostOffsets(grid);
+  if (_open.has(BoundaryKind::Inflow)) {
+    _inflowW = makeField(space, grid, faceStaggering(2), "hikiln::cfd::inflowW");
+    _inflowPhi = makeField(space, grid, faceStaggering(2), "hikiln::cfd::inflowPhi");
+  }
+  if (_open.has(BoundaryKind::Outflow)) {
+    _gasHead = cellField("hikiln::cfd::gasHead");
+    gasHead(space, grid, params.gasDensity, params.gravity, _gasHead);
+  }
+}
+
+template <class ExecutionSpace, class Shape>
+double TwoPhaseSolver<ExecutionSpace, Shape>::changeShape(Shape const& shape) {
+  const double before = solids();
+  _shape = shape;
+  _cut = buildCutCells(_space, _grid, shape, _cutOptions);
+  imposeInflow(_u.comp[2]);
+  makeDivergenceFree();
+  return before - solids();
+}
+
+template <class ExecutionSpace, class Shape>
+void TwoPhaseSolver<ExecutionSpace, Shape>::setFlatBed(double level) {
+  const Grid grid = _grid;
+  const int g = grid.ghost, gz = grid.ghostZ();
+  const double phiMax = _params.rheology.phiMax;
+  const auto vol = _cut.capacity;
+  const auto phi = _phi;
+  Kokkos::parallel_for(
+      "hikiln::cfd::setFlatBed", gridPolicy(_space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+      KOKKOS_LAMBDA(const int i, const int j, const int k) {
+        const double y0 = grid.y0 + j * grid.hy;
+        const double below = math::fmin(math::fmax((level - y0) / grid.hy, 0.0), 1.0);
+        phi(i + g, j + g, k + gz) = vol(i + g, j + g, k + gz) > 0.0 ? phiMax * below : 0.0;
+      });
+  for (int a = 0; a < 3; ++a) {
+    Kokkos::deep_copy(_space, _u.comp[a], 0.0);
+  }
+  hydrostaticPressure();
+  if (_inflowSet) {
+    startInflow();
+  }
+}
+
+template <class ExecutionSpace, class Shape>
+void TwoPhaseSolver<ExecutionSpace, Shape>::hydrostaticPressure() {
+  updateDensity();
+  for (int c = 0; c < dims(); ++c) {
+    Kokkos::deep_copy(_space, _uStar.comp[c], 0.0);
+  }
+  addGravity(_space, _cut, _params.gravity, 1.0, _uStar);
+  Kokkos::deep_copy(_space, _p, 0.0);
+  project(1.0, _uStar, _p, true, false);
+}
+
+template <class ExecutionSpace, class Shape>
+TwoPhaseStepReport TwoPhaseSolver<ExecutionSpace, Shape>::step(double dt) {
+  TwoPhaseStepReport report;
+  report.dt = dt;
+  report.limitedBy = "given";
+  const RheologyView rh = rheologyView();
+  report.solidsBefore = solidsContent(_space, _cut, _phi);
+  if (_params.energy) {
+    report.heatBefore = heat();
+  }
+  if (_phiOld.extent(0) > 0) {
+    Kokkos::deep_copy(_space, _phiOld, _phi);
+  }
+  if (_open.has(BoundaryKind::Inflow) || _open.has(BoundaryKind::Outflow)) {
+    fillOpenEndGhosts();
+  }
+  report.transportSubsteps = transportVolumeFractionInSubsteps(_space, _cut, _u, settling().v, dt,
+                                                               rh.phiMax, _params.cfl, _phi, _fct);
+  report.solidsAfter = solidsContent(_space, _cut, _phi);
+  for (int side : {ZLow, ZHigh}) {
+    if (_open.kind[side] == BoundaryKind::Wall) {
+      continue;
+    }
+    // the flux along +z leaves the domain at the high side and enters it at the low side
+    const double outward =
+        (side == ZHigh ? 1.0 : -1.0) * boundarySolidsFlux(_space, _cut, _fct, side);
+    if (_open.kind[side] == BoundaryKind::Outflow) {
+      report.solidsOut += outward;
+    } else {
+      report.solidsIn -= outward;
+    }
+  }
+  _solidsIn += report.solidsIn;
+  _solidsOut += report.solidsOut;
+  if (_params.energy) {
+    const HeatStep h = energyStep(dt, _T, _params.thermal, _inflowT);
+    report.energy = h.solve;
+    report.heatSubsteps = h.substeps;
+    report.heatIn = h.in;
+    report.heatOut = h.out;
+    report.heatFromShell = h.shell;
+    report.heatAfter = heat();
+  }
+  for (TemperatureTracer& tracer : _tracers) {
+    const HeatStep h = energyStep(dt, tracer.temperature, tracer.thermal, tracer.inflow);
+    tracer.lastIn = h.in;
+    tracer.lastOut = h.out;
+  }
+  updateDensity();
+  updateViscosity();
+  // momentum predictor with implicit viscosity
+  for (int c = 0; c < dims(); ++c) {
+    fillGhostsVelocity(_space, _grid, _velocityBc, c, _u.comp[c]);
+  }
+  const double muMax = maxAbsUnknowns(_space, _cells, _mu);
+  const WallFriction friction = wallFriction();
+  for (int c = 0; c < dims(); ++c) {
+    momentumPredictor(_space, _cut, _shape, c, _u, _rhoFace[c], dt, _params.penalty, muMax,
+                      friction, _pBed, _alpha[c], _rhs.comp[c], _uStar.comp[c]);
+    if (_params.incrementalProjection) {
+      addCarriedAcceleration(_space, _cut, c, _rhoFace[c], _accel.comp[c], _rhs.comp[c]);
+    }
+  }
+  // the open ends' normal velocities are data of the solve: u^n's (inflow given, outflow
+  // from the last projection)
+  copyEndNodes(_u.comp[2], _uStar.comp[2]);
+  const auto viscousStart = startSolveClock();
+  ViscousMultigrid<ExecutionSpace>& viscous = keptMultigrid(_momentumMg, [&] {
+    return std::make_unique<ViscousMultigrid<ExecutionSpace>>(
+        _space, _grid, _velocityBc, _alpha, _mu, multigridOptions(_params.viscousTolerance),
+        wallLawApertures());
+  });
+  const double coldResidual = warmMomentumStart(viscous, dt);
+  report.viscous = viscous.solvePcg(_uStar, _rhs, coldResidual);
+  if (_params.warmStart) {
+    viscous.axpby(1.0, _uStar, 1.0, _predictorChange); // u* less the cold guess
+  }
+  report.viscous.seconds = elapsedSince(viscousStart);
+  if constexpr (HasAxis<Shape>::value) {
+    // the shell's drag acts on the predicted velocity (shellTorque)
+    if (!_grid.is3D()) {
+      _dragTorque = shellTorqueOf(_uStar, dt);
+    }
+  }
+  if (!report.viscous.converged) {
+    throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: momentum solve did not converge (" +
+                             std::to_string(report.viscous.iterations) + " iterations)");
+  }
+  if (_params.incrementalProjection) {
+    for (int c = 0; c < dims(); ++c) {
+      removeCarriedAcceleration(_space, _cut, c, dt, _accel.comp[c], _uStar.comp[c]);
+    }
+  }
+  if (_open.has(BoundaryKind::Outflow)) {
+    extrapolateOutflow(_uStar.comp[2]);
+  }
+  addGravity(_space, _cut, _params.gravity, dt, _uStar);
+  report.pressure = project(dt, _uStar, _p);
+  if (_params.incrementalProjection) {
+    for (int c = 0; c < dims(); ++c) {
+      updateCarriedAcceleration(_space, _cut, c, dt, _uStar.comp[c], _accel.comp[c]);
+    }
+  }
+  for (int c = 0; c < dims(); ++c) {
+    Kokkos::deep_copy(_space, _u.comp[c], _uStar.comp[c]);
+  }
+  apertureDivergence(_space, _cut, _u, _div);
+  report.maxDivergence = maxAbsUnknowns(_space, _cells, _div);
+  _time += dt;
+  _lastDt = dt;
+  return report;
+}
+
+template <class ExecutionSpace, class Shape>
+double TwoPhaseSolver<ExecutionSpace, Shape>::wallSlip() {
+  if constexpr (!HasAxis<Shape>::value) {
+    return std::nan(""); // no axis (cx, cy, omega) to turn about
+  } else {
+    if (_shape.omega == 0.0) {
+      return std::nan("");
+    }
+    const Grid grid = _grid;
+    const int g = grid.ghost, gz = grid.ghostZ();
+    const auto cap = _cut.capacity;
+    const auto wall = _cut.wallLayer;
+    const auto phi = _phi;
+    const auto u = _u.comp[0], v = _u.comp[1];
+    const auto au = _cut.aperture[0], av = _cut.aperture[1];
+    const double half = 0.5 * _params.rheology.phiMax;
+    const double cx = _shape.cx, cy = _shape.cy, omega = _shape.omega;
+    double sum = 0.0, weight = 0.0;
+    Kokkos::parallel_reduce(
+        "hikiln::cfd::wallSlip", gridPolicy(_space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+        KOKKOS_LAMBDA(const int i, const int j, const int k, double& s, double& w) {
+          const int I = i + g, J = j + g, K = k + gz;
+          if (wall(I, J, K) <= 0.0 || phi(I, J, K) < half) {
+            return;
+          }
+          const double openU = au(I, J, K) + au(I + 1, J, K);
+          const double openV = av(I, J, K) + av(I, J + 1, K);
+          if (openU <= 0.0 || openV <= 0.0) {
+            return;
+          }
+          const double x = grid.coordinate(Staggering::Cell, 0, i) - cx;
+          const double y = grid.coordinate(Staggering::Cell, 1, j) - cy;
+          const double r = math::sqrt(x * x + y * y);
+          const double uc = (au(I, J, K) * u(I, J, K) + au(I + 1, J, K) * u(I + 1, J, K)) / openU;
+          const double vc = (av(I, J, K) * v(I, J, K) + av(I, J + 1, K) * v(I, J + 1, K)) / openV;
+          const double bed = cap(I, J, K) * phi(I, J, K);
+          s += bed * (-y * uc + x * vc) / (r * omega * r);
+          w += bed;
+        },
+        sum, weight);
+    return weight > 0.0 ? 1.0 - sum / weight : std::nan("");
+  }
+}
+
+template <class ExecutionSpace, class Shape>
+void TwoPhaseSolver<ExecutionSpace, Shape>::phiRange(double& lo, double& hi) {
+  const Grid grid = _grid;
+  const int g = grid.ghost, gz = grid.ghostZ();
+  const auto vol = _cut.capacity;
+  const auto phi = _phi;
+  lo = 0.0;
+  hi = 0.0;
+  Kokkos::parallel_reduce(
+      "hikiln::cfd::phiRange", gridPolicy(_space, {0, 0, 0}, {grid.nx, grid.ny, grid.nz}),
+      KOKKOS_LAMBDA(const int i, const int j, const int k, double& mn, double& mx) {
+        if (vol(i + g, j + g, k + gz) > 0.0) {
+          mn = math::fmin(mn, phi(i + g, j + g, k + gz));
+          mx = math::fmax(mx, phi(i + g, j + g, k + gz));
+        }
+      },
+      Kokkos::Min<double>(lo), Kokkos::Max<double>(hi));
+}
+
+template <class ExecutionSpace, class Shape>
+void TwoPhaseSolver<ExecutionSpace, Shape>::startInflow() {
+  imposeInflow(_u.comp[2]);
+  makeDivergenceFree();
+}
+
+#ifdef KOKKOS_ENABLE_SERIAL
+extern template class TwoPhaseSolver<Kokkos::Serial, DrumShell>;
+extern template class TwoPhaseSolver<Kokkos::Serial, KilnDomain>;
+#endif
+#ifdef KOKKOS_ENABLE_OPENMP
+extern template class TwoPhaseSolver<Kokkos::OpenMP, DrumShell>;
+extern template class TwoPhaseSolver<Kokkos::OpenMP, KilnDomain>;
+#endif
+#ifdef KOKKOS_ENABLE_CUDA
+extern template class TwoPhaseSolver<Kokkos::Cuda, DrumShell>;
+extern template class TwoPhaseSolver<Kokkos::Cuda, KilnDomain>;
+#endif
 
 } // namespace hikiln::cfd

@@ -58,130 +58,42 @@ public:
   ViscousMultigrid(ExecutionSpace const& space, Grid const& grid, VelocityBoundaries const& bc,
                    field_type const (&alpha)[3], field_type const& mu,
                    MultigridOptions const& options = MultigridOptions(),
-                   velocity_type const& open = velocity_type())
-      : _space(space), _bc(bc), _options(options) {
-    checkBoundaries(grid, bc);
-    setupLevels(grid, alpha, mu, open);
-    refresh();
-  }
+                   velocity_type const& open = velocity_type());
 
   /// \brief Takes the current values of the referenced fine alpha, mu and open: recomputes the
   /// edge viscosities and the coarse coefficients and rebuilds the coarsest level's solve, in
   /// the fields allocated at construction (as CellMultigrid::refresh).
-  void refresh() {
-    coarsenCoefficients();
-    setupCoarseSolve();
-  }
+  void refresh();
 
   /// \brief Solves A u = f by V-cycles from the initial guess u. The boundary nodes and ghosts
   /// of u are set from the boundary conditions first (and again at the end); stops at
   /// ||f - A u|| <= tolerance * ||f - A u_0|| or after maxIterations cycles.
-  SolveStats solve(velocity_type const& u, velocity_type const& f) {
-    fillBoundaries(u);
-    const velocity_type rhs = consistentRhs(f);
-    Level& fine = _levels.front();
-    SolveStats stats;
-    stats.initialResidual = std::sqrt(viscousResidual(_space, fine.op, u, rhs, fine.res, true));
-    stats.referenceResidual = stats.initialResidual;
-    stats.history.push_back(stats.initialResidual);
-    double residual = stats.initialResidual;
-    while (residual > _options.tolerance * stats.initialResidual &&
-           stats.iterations < _options.maxIterations) {
-      cycle(0, u, rhs, true);
-      residual = std::sqrt(viscousResidual(_space, fine.op, u, rhs, fine.res, true));
-      stats.history.push_back(residual);
-      ++stats.iterations;
-    }
-    finish(u);
-    stats.finalResidual = residual;
-    stats.converged = residual <= _options.tolerance * stats.initialResidual;
-    return stats;
-  }
+  SolveStats solve(velocity_type const& u, velocity_type const& f);
 
   /// \brief Solves A u = f by conjugate gradients preconditioned with one V-cycle per
   /// iteration (flexible Polak-Ribiere update), from the initial guess u. Stops at
   /// ||f - A u|| <= tolerance * reference, where reference is the initial residual, or the
   /// given one when > 0: a warm start then stops where a colder start would have (the caller
   /// measures that start's residual with residualNorm).
-  SolveStats solvePcg(velocity_type const& u, velocity_type const& f, double reference = 0.0) {
-    fillBoundaries(u);
-    allocateKrylov();
-    const velocity_type rhs = consistentRhs(f);
-    Level& fine = _levels.front();
-    SolveStats stats;
-    stats.initialResidual = std::sqrt(viscousResidual(_space, fine.op, u, rhs, _r, true));
-    stats.history.push_back(stats.initialResidual);
-    stats.referenceResidual = reference > 0.0 ? reference : stats.initialResidual;
-    const double target = _options.tolerance * stats.referenceResidual;
-    double residual = stats.initialResidual;
-    if (residual > target) {
-      precondition(_r, _z);
-      axpby(1.0, _z, 0.0, _p);
-      double rz = dot(_r, _z);
-      while (residual > target && stats.iterations < _options.maxIterations) {
-        applyViscousOperator(_space, fine.op, _p, _q, false);
-        const double step = rz / dot(_p, _q);
-        axpby(step, _p, 1.0, u);
-        axpby(-step, _q, 1.0, _r);
-        residual = std::sqrt(dot(_r, _r));
-        stats.history.push_back(residual);
-        ++stats.iterations;
-        if (residual <= target) {
-          break;
-        }
-        const double rzOld = dot(_r, _z);
-        precondition(_r, _z);
-        const double rzNew = dot(_r, _z);
-        axpby(1.0, _z, (rzNew - rzOld) / rz, _p);
-        rz = rzNew;
-      }
-    }
-    finish(u);
-    stats.converged = residual <= target;
-    stats.finalResidual = std::sqrt(viscousResidual(_space, fine.op, u, rhs, _q, true));
-    return stats;
-  }
+  SolveStats solvePcg(velocity_type const& u, velocity_type const& f, double reference = 0.0);
 
   /// \brief One V-cycle on A u = f (affine: boundary values included; the boundary nodes of u
   /// must hold them, see fillBoundaries).
-  void vcycle(velocity_type const& u, velocity_type const& f, bool affine) {
-    cycle(0, u, f, affine);
-  }
+  void vcycle(velocity_type const& u, velocity_type const& f, bool affine);
 
   /// \brief z = M^-1 r: one V-cycle from zero on the linear operator.
-  void precondition(velocity_type const& r, velocity_type const& z) {
-    for (int c = 0; c < numComponents(); ++c) {
-      Kokkos::deep_copy(_space, z.comp[c], 0.0);
-    }
-    cycle(0, z, r, false);
-    if (_singular) {
-      removeMeans(_levels.front(), z);
-    }
-  }
+  void precondition(velocity_type const& r, velocity_type const& z);
 
   /// \brief Sets the boundary nodes (given normal velocities) and ghost layers of u from the
   /// boundary conditions.
-  void fillBoundaries(velocity_type const& u) const {
-    Grid const& g = _levels.front().op.grid;
-    for (int c = 0; c < numComponents(); ++c) {
-      fillGhostsVelocity(_space, g, _bc, c, u.comp[c]);
-    }
-  }
+  void fillBoundaries(velocity_type const& u) const;
 
   /// \brief ||f - A u|| over all unknowns (affine; f as the solves take it), using an internal
   /// buffer. The boundary nodes of u must hold their values (fillBoundaries).
-  double residualNorm(velocity_type const& u, velocity_type const& f) {
-    Level& fine = _levels.front();
-    return std::sqrt(viscousResidual(_space, fine.op, u, consistentRhs(f), fine.res, true));
-  }
+  double residualNorm(velocity_type const& u, velocity_type const& f);
 
   /// \brief y = a x + b y over the finest level's unknowns (every component).
-  void axpby(double a, velocity_type const& x, double b, velocity_type const& y) const {
-    Level const& fine = _levels.front();
-    for (int c = 0; c < numComponents(); ++c) {
-      axpbyUnknowns(_space, fine.box[c], a, x.comp[c], b, y.comp[c]);
-    }
-  }
+  void axpby(double a, velocity_type const& x, double b, velocity_type const& y) const;
 
   /// \brief Number of levels.
   int numLevels() const { return static_cast<int>(_levels.size()); }
@@ -459,5 +371,143 @@ private:
   bool _singular = false;
   velocity_type _rhs0, _r, _z, _p, _q;
 };
+
+// The members that reach the kernels are defined out of the class, so that the explicit
+// instantiation declarations below keep them out of every file that uses the solver: they are
+// compiled once per backend in hikiln_cfd (solvers/cfd/CMakeLists.txt).
+
+template <class ExecutionSpace>
+ViscousMultigrid<ExecutionSpace>::ViscousMultigrid(ExecutionSpace const& space, Grid const& grid,
+                                                   VelocityBoundaries const& bc,
+                                                   field_type const (&alpha)[3],
+                                                   field_type const& mu,
+                                                   MultigridOptions const& options,
+                                                   velocity_type const& open)
+    : _space(space), _bc(bc), _options(options) {
+  checkBoundaries(grid, bc);
+  setupLevels(grid, alpha, mu, open);
+  refresh();
+}
+
+template <class ExecutionSpace> void ViscousMultigrid<ExecutionSpace>::refresh() {
+  coarsenCoefficients();
+  setupCoarseSolve();
+}
+
+template <class ExecutionSpace>
+SolveStats ViscousMultigrid<ExecutionSpace>::solve(velocity_type const& u, velocity_type const& f) {
+  fillBoundaries(u);
+  const velocity_type rhs = consistentRhs(f);
+  Level& fine = _levels.front();
+  SolveStats stats;
+  stats.initialResidual = std::sqrt(viscousResidual(_space, fine.op, u, rhs, fine.res, true));
+  stats.referenceResidual = stats.initialResidual;
+  stats.history.push_back(stats.initialResidual);
+  double residual = stats.initialResidual;
+  while (residual > _options.tolerance * stats.initialResidual &&
+         stats.iterations < _options.maxIterations) {
+    cycle(0, u, rhs, true);
+    residual = std::sqrt(viscousResidual(_space, fine.op, u, rhs, fine.res, true));
+    stats.history.push_back(residual);
+    ++stats.iterations;
+  }
+  finish(u);
+  stats.finalResidual = residual;
+  stats.converged = residual <= _options.tolerance * stats.initialResidual;
+  return stats;
+}
+
+template <class ExecutionSpace>
+SolveStats ViscousMultigrid<ExecutionSpace>::solvePcg(velocity_type const& u,
+                                                      velocity_type const& f, double reference) {
+  fillBoundaries(u);
+  allocateKrylov();
+  const velocity_type rhs = consistentRhs(f);
+  Level& fine = _levels.front();
+  SolveStats stats;
+  stats.initialResidual = std::sqrt(viscousResidual(_space, fine.op, u, rhs, _r, true));
+  stats.history.push_back(stats.initialResidual);
+  stats.referenceResidual = reference > 0.0 ? reference : stats.initialResidual;
+  const double target = _options.tolerance * stats.referenceResidual;
+  double residual = stats.initialResidual;
+  if (residual > target) {
+    precondition(_r, _z);
+    axpby(1.0, _z, 0.0, _p);
+    double rz = dot(_r, _z);
+    while (residual > target && stats.iterations < _options.maxIterations) {
+      applyViscousOperator(_space, fine.op, _p, _q, false);
+      const double step = rz / dot(_p, _q);
+      axpby(step, _p, 1.0, u);
+      axpby(-step, _q, 1.0, _r);
+      residual = std::sqrt(dot(_r, _r));
+      stats.history.push_back(residual);
+      ++stats.iterations;
+      if (residual <= target) {
+        break;
+      }
+      const double rzOld = dot(_r, _z);
+      precondition(_r, _z);
+      const double rzNew = dot(_r, _z);
+      axpby(1.0, _z, (rzNew - rzOld) / rz, _p);
+      rz = rzNew;
+    }
+  }
+  finish(u);
+  stats.converged = residual <= target;
+  stats.finalResidual = std::sqrt(viscousResidual(_space, fine.op, u, rhs, _q, true));
+  return stats;
+}
+
+template <class ExecutionSpace>
+void ViscousMultigrid<ExecutionSpace>::vcycle(velocity_type const& u, velocity_type const& f,
+                                              bool affine) {
+  cycle(0, u, f, affine);
+}
+
+template <class ExecutionSpace>
+void ViscousMultigrid<ExecutionSpace>::precondition(velocity_type const& r,
+                                                    velocity_type const& z) {
+  for (int c = 0; c < numComponents(); ++c) {
+    Kokkos::deep_copy(_space, z.comp[c], 0.0);
+  }
+  cycle(0, z, r, false);
+  if (_singular) {
+    removeMeans(_levels.front(), z);
+  }
+}
+
+template <class ExecutionSpace>
+void ViscousMultigrid<ExecutionSpace>::fillBoundaries(velocity_type const& u) const {
+  Grid const& g = _levels.front().op.grid;
+  for (int c = 0; c < numComponents(); ++c) {
+    fillGhostsVelocity(_space, g, _bc, c, u.comp[c]);
+  }
+}
+
+template <class ExecutionSpace>
+double ViscousMultigrid<ExecutionSpace>::residualNorm(velocity_type const& u,
+                                                      velocity_type const& f) {
+  Level& fine = _levels.front();
+  return std::sqrt(viscousResidual(_space, fine.op, u, consistentRhs(f), fine.res, true));
+}
+
+template <class ExecutionSpace>
+void ViscousMultigrid<ExecutionSpace>::axpby(double a, velocity_type const& x, double b,
+                                             velocity_type const& y) const {
+  Level const& fine = _levels.front();
+  for (int c = 0; c < numComponents(); ++c) {
+    axpbyUnknowns(_space, fine.box[c], a, x.comp[c], b, y.comp[c]);
+  }
+}
+
+#ifdef KOKKOS_ENABLE_SERIAL
+extern template class ViscousMultigrid<Kokkos::Serial>;
+#endif
+#ifdef KOKKOS_ENABLE_OPENMP
+extern template class ViscousMultigrid<Kokkos::OpenMP>;
+#endif
+#ifdef KOKKOS_ENABLE_CUDA
+extern template class ViscousMultigrid<Kokkos::Cuda>;
+#endif
 
 } // namespace hikiln::cfd
