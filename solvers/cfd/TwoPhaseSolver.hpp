@@ -938,11 +938,8 @@ TwoPhaseStepReport TwoPhaseSolver<ExecutionSpace, Shape>::step(double dt) {
     viscous.axpby(1.0, _uStar, 1.0, _predictorChange); // u* less the cold guess
   }
   report.viscous.seconds = elapsedSince(viscousStart);
-  if constexpr (HasAxis<Shape>::value) {
-    // the shell's drag acts on the predicted velocity (shellTorque)
-    if (!_grid.is3D()) {
-      _dragTorque = shellTorqueOf(_uStar, dt);
-    }
+  if (!_grid.is3D()) {
+    _dragTorque = shellTorqueOf(_uStar, dt); // the shell's drag acts on the predicted velocity
   }
   if (!report.viscous.converged) {
     throw std::runtime_error("hikiln::cfd::TwoPhaseSolver: momentum solve did not converge (" +
