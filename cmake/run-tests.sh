@@ -9,7 +9,8 @@
 #   cmake/run-tests.sh --cuda          build with nvcc against the CUDA Kokkos and run the tests on
 #                                      Serial, OpenMP and CUDA (needs an NVIDIA GPU)
 # Environment: HIKILN_BUILD_DIR (default build/, build-cuda/ with --cuda), HIKILN_CUDA_BUILD_DIR
-# (--cuda-compile, default build-cuda-compile/), HIKILN_JOBS, HIKILN_DEPS_DIR (see setup-deps.sh).
+# (--cuda-compile, default build-cuda-compile/), HIKILN_JOBS, HIKILN_DEPS_DIR (see setup-deps.sh),
+# HIKILN_HOST_ARCH (a -march value such as native; default: the compiler's, see README.md).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 labels_exclude="long"
@@ -20,7 +21,7 @@ for arg in "$@"; do
     --long) labels_exclude="" ;;
     --cuda-compile) cuda_compile=1 ;;
     --cuda) cuda_run=1 ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
     *) echo "run-tests: unknown option '$arg' (try --help)" >&2; exit 2 ;;
   esac
 done
@@ -31,7 +32,8 @@ configure() {  # build_dir, extra cmake args...: configure (quietly, log next to
   local dir=$1; shift
   mkdir -p "$dir"
   say "configuring $dir"
-  cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHIKILN_WARNINGS_AS_ERRORS=ON "$@" >"$dir.configure.log" 2>&1 \
+  cmake -S "$root" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release -DHIKILN_WARNINGS_AS_ERRORS=ON \
+    "-DHIKILN_HOST_ARCH=${HIKILN_HOST_ARCH:-}" "$@" >"$dir.configure.log" 2>&1 \
     || { cat "$dir.configure.log"; return 1; }
 }
 
