@@ -54,7 +54,7 @@ KOKKOS_FORCEINLINE_FUNCTION void cellStencil(CellOperator<MemorySpace> const& op
     diag = 0.0;
   }
   rest = 0.0;
-  const double cx = scale.inv2[0];
+  const double cx = scale.inv2(0);
   {
     constexpr bool inside = interiorAlong(Axes, 0);
     const Neighbour up = upOf<inside>(op.axis[0], i, affine);
@@ -65,7 +65,7 @@ KOKKOS_FORCEINLINE_FUNCTION void cellStencil(CellOperator<MemorySpace> const& op
     rest += bu * neighbourValue<inside>(up, x(up.index + g, j + g, k + gz)) +
             bd * neighbourValue<inside>(dn, x(dn.index + g, j + g, k + gz));
   }
-  const double cy = scale.inv2[1];
+  const double cy = scale.inv2(1);
   {
     constexpr bool inside = interiorAlong(Axes, 1);
     const Neighbour up = upOf<inside>(op.axis[1], j, affine);
@@ -77,7 +77,7 @@ KOKKOS_FORCEINLINE_FUNCTION void cellStencil(CellOperator<MemorySpace> const& op
             bd * neighbourValue<inside>(dn, x(i + g, dn.index + g, k + gz));
   }
   if constexpr (Dims == 3) {
-    const double cz = scale.inv2[2];
+    const double cz = scale.inv2(2);
     constexpr bool inside = interiorAlong(Axes, 2);
     const Neighbour up = upOf<inside>(op.axis[2], k, affine);
     const Neighbour dn = downOf<inside>(op.axis[2], k, affine);

@@ -137,7 +137,7 @@ viscousStencilAxis(ViscousOperator<MemorySpace> const& op, GridScales const& sca
     const double dnHigh = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
     p[c] = cBelow;
     const double dnLow = ua(p[0] + off[0], p[1] + off[1], p[2] + off[2]);
-    rest += (cu * (upHigh - upLow) - cd * (dnHigh - dnLow)) * scale.invMixed[a][c];
+    rest += (cu * (upHigh - upLow) - cd * (dnHigh - dnLow)) * scale.invMixed(a, c);
   }
   const Neighbour up = upOf<insideA>(ax, idx[a], affine);
   const Neighbour dn = downOf<insideA>(ax, idx[a], affine);
@@ -155,7 +155,7 @@ viscousStencilAxis(ViscousOperator<MemorySpace> const& op, GridScales const& sca
     cu *= here * above;
     cd *= here * below;
   }
-  const double inv2 = scale.inv2[a];
+  const double inv2 = scale.inv2(a);
   cu *= inv2;
   cd *= inv2;
   diag += cu * up.diag + cd * dn.diag;
