@@ -96,7 +96,6 @@ struct Grid {
 /// change them (the language's type-based aliasing rules), so they stay in registers across the
 /// row (perf/README.md, "Grid scales kept in registers").
 struct GridScales {
-  GridScales() = default;
   /// \brief The scales of grid.
   explicit GridScales(Grid const& grid) {
     for (int a = 0; a < 3; ++a) {
@@ -111,15 +110,15 @@ struct GridScales {
   KOKKOS_INLINE_FUNCTION double invMixed(int a, int b) const { return valueOf(invMixedBits[a][b]); }
 
 private:
-  std::uint64_t invMixedBits[3][3] = {
-      {bitsOf(1.0), 0, 0}, {0, bitsOf(1.0), 0}, {0, 0, bitsOf(1.0)}};
+  std::uint64_t invMixedBits[3][3]; ///< every entry set by the constructor
 
   KOKKOS_INLINE_FUNCTION static std::uint64_t bitsOf(double v) {
     std::uint64_t b;
     std::memcpy(&b, &v, sizeof b);
     return b;
   }
-  /// Reads the integer first (a load the aliasing rules protect), then reinterprets the register.
+  /// The caller's read of the integer is the load the aliasing rules protect; this only
+  /// reinterprets the register.
   KOKKOS_INLINE_FUNCTION static double valueOf(std::uint64_t bits) {
     double v;
     std::memcpy(&v, &bits, sizeof v);
