@@ -74,8 +74,14 @@ void settle(DemSystem<Space>& system, double duration, double gravity, const cha
   double kinetic = 0;
   do {
     system.advance(chunk);
-    progress.update(system.time(), system.stepCount());
     kinetic = system.energy().kinetic();
+    // past the minimum the loop waits for rest: say how far the bed is from it
+    const bool waiting = system.time() - start >= duration;
+    progress.update(system.time(), system.stepCount(),
+                    waiting ? fmt::format("waiting for rest: kinetic energy {:.3g} x the rest "
+                                          "level (at most until t = {:.3f} s)",
+                                          kinetic / restEnergy, start + 10 * duration)
+                            : std::string());
   } while (system.time() - start < 10 * duration &&
            (system.time() - start < duration || !(kinetic < restEnergy)));
   progress.finish();

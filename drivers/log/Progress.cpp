@@ -31,13 +31,14 @@ Progress::~Progress() {
 }
 
 std::string Progress::format(double simulatedTime, double endTime, double stepsPerSecond,
-                             double etaSeconds) {
+                             double etaSeconds, const std::string& note) {
   const double percent = endTime > 0 ? 100.0 * simulatedTime / endTime : 100.0;
-  return fmt::format("t = {:.3f} / {:.3f} s ({:5.1f} %), {:.3g} steps/s, ETA {}", simulatedTime,
-                     endTime, percent, stepsPerSecond, formatDuration(etaSeconds));
+  return fmt::format("t = {:.3f} / {:.3f} s ({:5.1f} %), {:.3g} steps/s, ETA {}{}{}", simulatedTime,
+                     endTime, percent, stepsPerSecond, formatDuration(etaSeconds),
+                     note.empty() ? "" : ", ", note);
 }
 
-void Progress::update(double simulatedTime, std::int64_t step) {
+void Progress::update(double simulatedTime, std::int64_t step, const std::string& note) {
   if (_firstStep < 0) {
     _firstStep = step;
     _firstTime = simulatedTime;
@@ -54,7 +55,7 @@ void Progress::update(double simulatedTime, std::int64_t step) {
   // from the progress made by this process: a restarted run does not count the time before it
   const double done = simulatedTime - _firstTime;
   const double eta = done > 0 ? elapsed * (_endTime - simulatedTime) / done : -1.0;
-  const std::string text = format(simulatedTime, _endTime, rate, eta);
+  const std::string text = format(simulatedTime, _endTime, rate, eta, note);
   if (_terminal) {
     std::fprintf(stderr, "\r[%s] %s\x1b[K", _label.c_str(), text.c_str());
     std::fflush(stderr);

@@ -18,14 +18,16 @@ public:
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
 
-  /// \brief Called often (cheap): prints only when the display interval has passed.
-  void update(double simulatedTime, std::int64_t step);
+  /// \brief Called often (cheap): prints only when the display interval has passed. A non-empty
+  /// `note` is appended to the line (e.g. what a loop that runs past endTime waits for).
+  void update(double simulatedTime, std::int64_t step, const std::string& note = {});
   /// \brief Final line with totals; called by the destructor if not called explicitly.
   void finish();
 
-  /// \brief The status text for a given state (exposed for tests).
+  /// \brief The status text for a given state, `note` appended when non-empty (exposed for
+  /// tests).
   static std::string format(double simulatedTime, double endTime, double stepsPerSecond,
-                            double etaSeconds);
+                            double etaSeconds, const std::string& note = {});
 
 private:
   using Clock = std::chrono::steady_clock;
