@@ -76,12 +76,15 @@ void settle(DemSystem<Space>& system, double duration, double gravity, const cha
     system.advance(chunk);
     kinetic = system.energy().kinetic();
     // past the minimum the loop waits for rest: say how far the bed is from it
-    const bool waiting = system.time() - start >= duration;
-    progress.update(system.time(), system.stepCount(),
-                    waiting ? fmt::format("waiting for rest: kinetic energy {:.3g} x the rest "
-                                          "level (at most until t = {:.3f} s)",
-                                          kinetic / restEnergy, start + 10 * duration)
-                            : std::string());
+    std::string note;
+    if (system.time() - start >= duration) {
+      note = restEnergy > 0
+                 ? fmt::format("waiting for rest: kinetic energy {:.3g} x the rest level",
+                               kinetic / restEnergy)
+                 : std::string("no rest level without gravity");
+      note += fmt::format(" (at most until t = {:.3f} s)", start + 10 * duration);
+    }
+    progress.update(system.time(), system.stepCount(), note);
   } while (system.time() - start < 10 * duration &&
            (system.time() - start < duration || !(kinetic < restEnergy)));
   progress.finish();
