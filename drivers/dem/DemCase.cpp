@@ -134,6 +134,12 @@ cases::CaseSchema buildSchema() {
       .positive()
       .defaultsTo("1.0")
       .doc("Settling time before trimming to the fill (and half of it after)");
+  s.real("time.settle_damping")
+      .unit("1/s")
+      .nonNegative()
+      .defaultsTo("0")
+      .doc("While settling, free particles' velocities and spins are multiplied by "
+           "exp(-rate x 0.05 s) every 0.05 s (0: off); large drums come to rest sooner");
   s.real("time.duration").unit("s").positive().defaultsTo("60").doc("Simulated rotation time");
   s.real("time.spin_up")
       .unit("s")
@@ -256,6 +262,7 @@ DrumRunSettings drumSettingsFromCase(const cases::CaseFile& c) {
   s.config.walls.drum.angularVelocity = 0.0; // still while filling and settling
   s.rpm = c.real("drum.rpm");
   s.settleTime = c.real("time.settle");
+  s.settleDamping = c.real("time.settle_damping");
   s.duration = c.real("time.duration");
   s.spinUp = c.real("time.spin_up");
   s.sampleInterval = c.real("output.sample_interval");

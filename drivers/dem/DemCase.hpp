@@ -16,6 +16,7 @@ struct DrumRunSettings {
   DemConfig config;                 ///< contact laws, time step, neighbours, gravity, walls
   double rpm = 3.0;                 ///< drum speed (rev/min)
   double settleTime = 1.0;          ///< s, before and again after trimming to the fill
+  double settleDamping = 0.0;       ///< 1/s, motion removed while settling (0: none)
   double duration = 60.0;           ///< s of rotation
   double spinUp = 5.0;              ///< s of rotation before averages start
   double sampleInterval = 0.05;     ///< s between samples (slip, angle, averages)

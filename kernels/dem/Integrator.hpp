@@ -55,6 +55,27 @@ void finishHalfKick(ExecutionSpace const& space, ParticleArrays<MemorySpace> con
       });
 }
 
+/// \brief Multiplies the velocity and spin of the free particles [0, n) by `factor` (settling
+/// removes motion this way; fixed and shell particles keep their prescribed motion).
+template <class ExecutionSpace, class MemorySpace>
+void scaleFreeMotion(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
+                     double factor) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::dem::scaleFreeMotion: particle memory not accessible");
+  auto v = p.velocity;
+  auto w = p.angularVelocity;
+  auto kind = p.kind;
+  Kokkos::parallel_for(
+      "hikiln::dem::scaleFreeMotion", Kokkos::RangePolicy<ExecutionSpace>(space, 0, p.count()),
+      KOKKOS_LAMBDA(int i) {
+        if (isFree(kind(i))) {
+          v(i, 0) *= factor;
+          v(i, 1) *= factor;
+          w(i) *= factor;
+        }
+      });
+}
+
 /// \brief No shell particles: an empty home View for initialIntegrate().
 template <class MemorySpace>
 Kokkos::View<double* [2], MemorySpace> noShellHome() {

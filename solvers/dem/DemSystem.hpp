@@ -200,6 +200,18 @@ public:
     _space.fence();
   }
 
+  /// \brief Multiplies the velocities and spins of the free particles by `factor` in [0, 1]
+  /// (the settling of a drum removes motion this way; positions, forces and contact history stay).
+  void scaleFreeMotion(double factor) {
+    requireParticles();
+    if (!(factor >= 0.0 && factor <= 1.0)) {
+      throw std::invalid_argument("hikiln::dem::DemSystem: motion scale factor must be in [0, 1]");
+    }
+    synchronize(); // the pending half kick belongs to the motion being scaled
+    hikiln::dem::scaleFreeMotion(_space, _particles, factor); // the kernel, not this member
+    ++_version;
+  }
+
   /// \brief Rebuilds the neighbour list now (history carried over).
   void forceRebuild() {
     requireParticles();

@@ -187,6 +187,47 @@ TEST(TEST_CATEGORY, dem_shell_particles_follow_the_drum_exactly) {
   EXPECT_GT(sys.energy().kinetic(), 0.0);
 }
 
+TEST(TEST_CATEGORY, dem_scaling_free_motion_leaves_prescribed_motion) {
+  // the same steps twice: `twin` is read as it is, `sys` scaled with its half kick still pending
+  DemSystem<space> sys(roughDrumConfig()), twin(roughDrumConfig());
+  for (auto* s : {&sys, &twin}) {
+    s->importState(turningRoughDrum());
+    s->setDrumAngularVelocity(3.0);
+    s->advance(3);
+  }
+  sys.scaleFreeMotion(0.25); // a power of two: the products are exact
+  const auto before = test::byId(twin);
+  const auto kinds = twin.hostParticles();
+  const double kineticBefore = twin.energy().kinetic();
+  const auto after = test::byId(sys);
+  int free = 0, shell = 0;
+  for (std::size_t i = 0; i < kinds.count(); ++i) {
+    const auto& b = before.at(kinds.id(i));
+    const auto& a = after.at(kinds.id(i));
+    const bool onShell = kinds.kind(i) == shellKind;
+    const double f = onShell ? 1.0 : 0.25;
+    (onShell ? shell : free) += 1;
+    if (onShell) {
+      EXPECT_NE(b.vx * b.vx + b.vy * b.vy, 0.0); // the shell turns
+    }
+    EXPECT_EQ(a.vx, f * b.vx);
+    EXPECT_EQ(a.vy, f * b.vy);
+    EXPECT_EQ(a.w, f * b.w);
+    EXPECT_EQ(a.x, b.x);
+    EXPECT_EQ(a.y, b.y);
+    EXPECT_EQ(a.fx, b.fx);
+  }
+  ASSERT_GT(free, 100);
+  ASSERT_GT(shell, 50);
+  EXPECT_GT(kineticBefore, 0.0);
+  // the shell ring moves at 3 rad/s but has no mass in the energy: the bed's energy falls 16x
+  EXPECT_NEAR(sys.energy().kinetic(), kineticBefore / 16.0, 1e-12 * kineticBefore);
+  EXPECT_THROW(sys.scaleFreeMotion(1.5), std::invalid_argument);
+  EXPECT_THROW(sys.scaleFreeMotion(std::nan("")), std::invalid_argument);
+  sys.advance(100);
+  EXPECT_TRUE(std::isfinite(sys.energy().kinetic()));
+}
+
 TEST(TEST_CATEGORY, dem_rough_drum_bitwise_across_threads_reorders_and_restart) {
   DemSystem<space> plain(roughDrumConfig()), shuffled(roughDrumConfig());
   plain.importState(turningRoughDrum());
