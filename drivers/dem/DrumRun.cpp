@@ -62,7 +62,7 @@ struct Running {
 /// Settles for at least `duration`, then on until the bed is at rest (mean kinetic energy per
 /// particle below 1e-4 m g d, i.e. speeds around 1 % of sqrt(g d)), at most 10 x `duration`.
 /// damping (1/s, time.settle_damping): after each chunk of about 0.05 s the free particles' motion
-/// is multiplied by exp(-damping x chunk), which stops a tall bed rocking in a large drum sooner.
+/// is multiplied by exp(-damping x chunk), which brings a tall bed in a large drum to rest sooner.
 void settle(DemSystem<Space>& system, double duration, double gravity, double damping,
             const char* label) {
   const auto host = system.hostParticles();

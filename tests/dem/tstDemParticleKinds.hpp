@@ -220,7 +220,7 @@ TEST(TEST_CATEGORY, dem_scaling_free_motion_leaves_prescribed_motion) {
   ASSERT_GT(free, 100);
   ASSERT_GT(shell, 50);
   EXPECT_GT(kineticBefore, 0.0);
-  // the shell ring moves at 3 rad/s but has no mass in the energy: the bed's energy falls 16x
+  // the shell ring (3 rad/s) is not counted in the kinetic energy: the bed's falls 16x
   EXPECT_NEAR(sys.energy().kinetic(), kineticBefore / 16.0, 1e-12 * kineticBefore);
   EXPECT_THROW(sys.scaleFreeMotion(1.5), std::invalid_argument);
   EXPECT_THROW(sys.scaleFreeMotion(std::nan("")), std::invalid_argument);
