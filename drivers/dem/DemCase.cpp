@@ -176,6 +176,10 @@ cases::CaseSchema buildSchema() {
       .range(4, 64)
       .defaultsTo("12")
       .doc("Neighbour slots per particle (an overflow stops the run with an error)");
+  s.boolean("neighbor.pair_once")
+      .defaultsTo("false")
+      .doc("Discs: evaluate each pair once, the partner's side summed exactly as integers (the "
+           "same guarantees, a different rounding; CPU backends)");
   s.real("gravity").unit("m/s^2").nonNegative().defaultsTo("9.81").doc("Gravity, along -y");
   addHeatKeys(s);
   s.require("particles.blockiness = 2 and particles.aspect_ratio = 1 unless particles.shape: "
@@ -257,6 +261,7 @@ DrumRunSettings drumSettingsFromCase(const cases::CaseFile& c) {
   s.config.skin = c.real("neighbor.skin") * s.fill.meanDiameter * (1 + s.fill.sizeRange) *
                   boundingRadiusRatio(s.fill.shape);
   s.config.neighborCapacity = static_cast<int>(c.integer("neighbor.capacity"));
+  s.config.pairOnceForces = c.boolean("neighbor.pair_once");
   s.config.walls.drum.enabled = true;
   s.config.walls.drum.radius = s.fill.drumRadius;
   s.config.walls.drum.angularVelocity = 0.0; // still while filling and settling

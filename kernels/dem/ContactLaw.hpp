@@ -183,12 +183,13 @@ struct ContactForce {
 /// \brief Evaluates the contact law. shearOld is the stored tangential displacement; when
 /// updateHistory it is advanced by v_t dt first (LAMMPS skips that during setup). relativeSpin is
 /// omega_i - omega_other, rollingRadius R_r. On Coulomb slip the history is rescaled so that
-/// k_t shear + c_t v_t equals the capped force (LAMMPS gran/hooke/history).
-KOKKOS_INLINE_FUNCTION ContactForce evaluateContact(const ContactCoefficients& c,
-                                                    const ContactFrame& f, double meff,
-                                                    double rollingRadius, double relativeSpin,
-                                                    double shearOld, double dt,
-                                                    bool updateHistory) {
+/// k_t shear + c_t v_t equals the capped force (LAMMPS gran/hooke/history). Forced inline: GCC
+/// called it out of line from the pair-once force loop, which then ran slower than the full rows.
+KOKKOS_FORCEINLINE_FUNCTION ContactForce evaluateContact(const ContactCoefficients& c,
+                                                         const ContactFrame& f, double meff,
+                                                         double rollingRadius, double relativeSpin,
+                                                         double shearOld, double dt,
+                                                         bool updateHistory) {
   ContactForce out;
   const double cn = normalDampingCoefficient(c, meff);
   double fn = c.kn * f.overlap - cn * f.normalSpeed;

@@ -3,7 +3,8 @@
 /// \brief Contact, wall and gravity forces of every particle from its full neighbour row
 /// (optionally fused with the second velocity-Verlet half kick). Each particle sums in registers
 /// and writes only its own entries (force, torque, its history row, its wall history): no atomics,
-/// and the result does not depend on the thread count.
+/// and the result does not depend on the thread count. PairOnceForces.hpp runs the same functor
+/// over half of each row instead (an option: each pair evaluated once).
 ///
 /// The time step stores no per-contact forces (they would double the list's memory traffic);
 /// computeContactForces() re-evaluates them for the current state when a sampler needs them.
@@ -55,10 +56,22 @@ namespace detail {
 /// \brief Particles per dynamically scheduled chunk of the force kernel (a few microseconds).
 inline constexpr int forceChunk = 64;
 
+/// \brief Exact sums of what partners give a particle in the pair-once pass: force x and y as
+/// integers of 1 / forceScale N, the torque of 1 / torqueScale N m, and a flag for a contribution
+/// that did not fit (it turns the force into NaN).
+template <class MemorySpace> struct PartnerSums {
+  Kokkos::View<std::int64_t* [4], MemorySpace> sums;
+  double forceScale = 0.0, torqueScale = 0.0;
+};
+
 /// \brief Per-particle body of the force evaluation; Kick also writes the half-kicked velocity.
 /// Sample evaluates without touching the state: contact history, force and torque are left as
-/// they are and the contact forces go to slotFn/slotFt and wallFn/wallFt instead.
-template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor {
+/// they are and the contact forces go to slotFn/slotFt and wallFn/wallFt instead. PairOnce
+/// evaluates only the slots of higher neighbour ids (rows are sorted by id) and gives each
+/// partner its side through `partner` and its history through the partner's slot
+/// (computeForcesPairOnce()).
+template <class MemorySpace, bool Kick, bool Sample = false, bool PairOnce = false>
+struct ForceFunctor {
   using Vec = Kokkos::View<double* [2], MemorySpace>;
   using Scalar = Kokkos::View<double*, MemorySpace>;
   using Wall = Kokkos::View<double* [wallSlotCount], MemorySpace>;
@@ -66,6 +79,8 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
   Scalar w, tq, wOut, radius, mass, invM, invI;
   Kokkos::View<int*, MemorySpace> count;
   Kokkos::View<std::uint8_t*, MemorySpace> kind;
+  Kokkos::View<std::int64_t*, MemorySpace> id; ///< PairOnce only
+  PartnerSums<MemorySpace> partner;            ///< PairOnce only
   Kokkos::View<int**, MemorySpace> index;
   Kokkos::View<double**, MemorySpace> shear, slotFn, slotFt;
   Wall wallShear, wallFn, wallFt;
@@ -100,6 +115,39 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
     t += ri * c.tangential + c.rollingTorque;
   }
 
+  /// \brief PairOnce: the first slot of row i whose neighbour has a higher id.
+  KOKKOS_INLINE_FUNCTION int firstHigherSlot(int i, int n) const {
+    const std::int64_t own = id(i);
+    int k = 0;
+    while (k < n && id(index(i, k)) < own) {
+      ++k;
+    }
+    return k;
+  }
+
+  /// \brief PairOnce: the history of pair (i, j) into j's slot of i, when j's row has one.
+  KOKKOS_INLINE_FUNCTION void mirrorHistory(int i, int j, double value) const {
+    const int n = count(j) < capacity ? count(j) : capacity;
+    for (int m = 0; m < n; ++m) {
+      if (index(j, m) == i) {
+        shear(j, m) = value;
+        return;
+      }
+    }
+  }
+
+  /// \brief PairOnce: adds a force or torque component to partner j's exact sum (column c); a
+  /// value too large for the integers (or NaN) flags j instead.
+  KOKKOS_INLINE_FUNCTION void givePartner(int j, int c, double value) const {
+    constexpr double limit = 288230376151711744.0; // 2^58: 32 terms still fit in 63 bits
+    const double scaled = value * (c == 2 ? partner.torqueScale : partner.forceScale);
+    if (math::fabs(scaled) < limit) {
+      partner.sums(j, c) += static_cast<std::int64_t>(scaled);
+    } else {
+      partner.sums(j, 3) = 1;
+    }
+  }
+
   KOKKOS_INLINE_FUNCTION void operator()(int i) const {
     if (slices.enabled()) {
       evaluate(i, slices.settings(slices.slice(i)));
@@ -115,7 +163,8 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
     const bool freeI = isFree(kind(i));
     double fx = 0.0, fy = 0.0, t = 0.0;
     const int n = count(i) < capacity ? count(i) : capacity;
-    for (int k = 0; k < n; ++k) { // ascending neighbour id: a fixed summation order
+    const int first = PairOnce ? firstHigherSlot(i, n) : 0;
+    for (int k = first; k < n; ++k) { // ascending neighbour id: a fixed summation order
       const int j = index(i, k);
       const double rj = radius(j);
       const double dx = s.periodic.minimumImage(x(j, 0) - xi);
@@ -133,6 +182,9 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
           slotFt(i, k) = 0.0;
         } else if (shear(i, k) != 0.0) { // history ends with the contact
           shear(i, k) = 0.0;
+          if (PairOnce) {
+            mirrorHistory(i, j, 0.0);
+          }
         }
         continue;
       }
@@ -146,9 +198,17 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
       } else {
         shear(i, k) = c.shear;
       }
-      fx += -c.normal * fr.nx + c.tangential * (-fr.ny);
-      fy += -c.normal * fr.ny + c.tangential * fr.nx;
+      const double px = -c.normal * fr.nx + c.tangential * (-fr.ny);
+      const double py = -c.normal * fr.ny + c.tangential * fr.nx;
+      fx += px;
+      fy += py;
       t += ri * c.tangential + c.rollingTorque;
+      if (PairOnce) { // j's side: the opposite force, its own lever, the opposite rolling torque
+        mirrorHistory(i, j, c.shear);
+        givePartner(j, 0, -px);
+        givePartner(j, 1, -py);
+        givePartner(j, 2, rj * c.tangential - c.rollingTorque);
+      }
     }
     ContactFrame fr;
     if (s.walls.drum.enabled) {
@@ -178,15 +238,15 @@ template <class MemorySpace, bool Kick, bool Sample = false> struct ForceFunctor
   }
 };
 
-template <bool Kick, bool Sample = false, class ExecutionSpace, class MemorySpace>
-void launchForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
-                  NeighborList<MemorySpace> const& list, WallContactState<MemorySpace> const& walls,
-                  ForceSettings const& settings, SliceTable<MemorySpace> const& slices,
-                  Kokkos::View<double* [2], MemorySpace> const& velocityOut,
-                  Kokkos::View<double*, MemorySpace> const& angularVelocityOut, const char* label) {
-  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
-                "hikiln::dem::computeForces: particle memory not accessible");
-  ForceFunctor<MemorySpace, Kick, Sample> fun;
+/// \brief The force functor over p, the list's rows and the wall history (see ForceFunctor).
+template <bool Kick, bool Sample = false, bool PairOnce = false, class MemorySpace>
+ForceFunctor<MemorySpace, Kick, Sample, PairOnce>
+makeForceFunctor(ParticleArrays<MemorySpace> const& p, NeighborList<MemorySpace> const& list,
+                 WallContactState<MemorySpace> const& walls, ForceSettings const& settings,
+                 SliceTable<MemorySpace> const& slices,
+                 Kokkos::View<double* [2], MemorySpace> const& velocityOut,
+                 Kokkos::View<double*, MemorySpace> const& angularVelocityOut) {
+  ForceFunctor<MemorySpace, Kick, Sample, PairOnce> fun;
   fun.x = p.position;
   fun.v = p.velocity;
   fun.f = p.force;
@@ -200,6 +260,7 @@ void launchForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const
   fun.invI = p.inverseInertia;
   fun.count = list.count;
   fun.kind = p.kind;
+  fun.id = p.id;
   fun.index = list.index;
   fun.shear = list.shear;
   fun.slotFn = list.normalForce;
@@ -210,6 +271,19 @@ void launchForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const
   fun.common = settings;
   fun.slices = slices;
   fun.capacity = list.capacity();
+  return fun;
+}
+
+template <bool Kick, bool Sample = false, class ExecutionSpace, class MemorySpace>
+void launchForces(ExecutionSpace const& space, ParticleArrays<MemorySpace> const& p,
+                  NeighborList<MemorySpace> const& list, WallContactState<MemorySpace> const& walls,
+                  ForceSettings const& settings, SliceTable<MemorySpace> const& slices,
+                  Kokkos::View<double* [2], MemorySpace> const& velocityOut,
+                  Kokkos::View<double*, MemorySpace> const& angularVelocityOut, const char* label) {
+  static_assert(Kokkos::SpaceAccessibility<ExecutionSpace, MemorySpace>::accessible,
+                "hikiln::dem::computeForces: particle memory not accessible");
+  const auto fun = makeForceFunctor<Kick, Sample>(p, list, walls, settings, slices, velocityOut,
+                                                  angularVelocityOut);
   // dynamic chunks: particles differ in contact count, and on a busy machine a thread that is
   // descheduled for a while leaves its remaining chunks to the others instead of stalling them
   Kokkos::parallel_for(

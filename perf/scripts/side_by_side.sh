@@ -3,7 +3,7 @@
 # one thread each, OLD on core 0 and NEW on core 1, then the cores swapped; REPS times. On a
 # shared VM whose speed drifts by 20 % and more between runs a minute apart, runs taken at the
 # same time see the same machine, so their ratio is far steadier than that of runs taken in turn
-# (perf/README.md, "Measured, not kept: each pair evaluated once").
+# (perf/README.md, "Each pair evaluated once").
 #
 # usage: perf/scripts/side_by_side.sh REPS OLD NEW CASE [hikiln dem options...]
 #   e.g. perf/scripts/side_by_side.sh 3 old/hikiln new/hikiln cases/drum-base.yaml \

@@ -59,6 +59,7 @@
 #include "kernels/dem/ForceKernel.hpp"
 #include "kernels/dem/Integrator.hpp"
 #include "kernels/dem/NeighborList.hpp"
+#include "kernels/dem/PairOnceForces.hpp"
 #include "kernels/dem/ParticleArrays.hpp"
 #include "kernels/dem/Periodic.hpp"
 #include "kernels/dem/PrescribedMotion.hpp"
@@ -94,6 +95,11 @@ struct DemConfig {
   double skin = 0.0;          ///< neighbour skin (m); <= 0: 0.2 x the largest diameter
   int neighborCapacity = 12;  ///< slots per particle in the neighbour list
   int sortEveryRebuilds = 10; ///< reorder particles by cell every N rebuilds (0: only on request)
+  /// evaluate each disc pair once, adding the partner's side into exact integer sums
+  /// (PairOnceForces.hpp): the same guarantees, the partners' side rounded to 2^-50 of k_n times
+  /// the largest diameter (torques: times the largest radius too); host backends only (a device
+  /// keeps the full-row kernel)
+  bool pairOnceForces = false;
   WallSet walls;
   PeriodicX periodic;
 };
@@ -718,9 +724,17 @@ private:
   void evaluateForces(const ForceSettings& settings) {
     if (_isBlocky && !_circlesOnly) {
       computeBlockyForces(_space, _particles, _blocky, _list, _walls, settings, _pairOutcomes);
+    } else if (usesPairOnce()) {
+      computeForcesPairOnce(_space, _particles, _list, _walls, settings, sliceTable(), _pairOnce);
     } else {
       computeForces(_space, _particles, _list, _walls, settings, sliceTable());
     }
+  }
+
+  // The pair-once disc kernel: asked for, and on a host backend.
+  bool usesPairOnce() const {
+    return _config.pairOnceForces &&
+           Kokkos::SpaceAccessibility<Kokkos::HostSpace, memory_space>::accessible;
   }
 
   void requireParticles() const {
@@ -909,6 +923,8 @@ private:
           std::min(inertiaFactor, h.inertia(i) / (h.mass(i) * h.radius(i) * h.radius(i)));
     }
     _skin = _config.skin > 0.0 ? _config.skin : 0.4 * rmax;
+    _pairOnce.partner.forceScale = pairOnceScale(_settings.particle.kn * 2.0 * rmax);
+    _pairOnce.partner.torqueScale = pairOnceScale(_settings.particle.kn * 2.0 * rmax * rmax);
     _cellSize = 2.0 * rmax + _skin;
     if (_config.timeStep > 0.0) {
       _settings.dt = _config.timeStep;
@@ -968,6 +984,9 @@ private:
     // a kernel, not deep_copy: a host deep_copy may run on the default host space's threads
     // (a free function: CUDA extended lambdas may not sit in a private member function)
     copyPositions(_space, _particles.position, _buildPosition, n);
+    if (usesPairOnce()) {
+      _pairOnce.block = pairOnceBlockSize(_space, _list, n);
+    }
     _rebuildRequested = false;
     ++_rebuildCount;
   }
@@ -986,6 +1005,7 @@ private:
   BlockyArrays<memory_space> _blocky;             // blocky systems: shapes and orientations
   Kokkos::View<double*, memory_space> _area;      // blocky systems: true particle areas
   BlockyPairOutcomes<memory_space> _pairOutcomes; // blocky systems: force pass scratch
+  PairOnceState<memory_space> _pairOnce;          // DemConfig::pairOnceForces
   bool _circlesOnly = false; // blocky systems: every shape a circle (the disc force kernel)
   bool _isBlocky = false;
   Kokkos::View<int*, memory_space> _slice;                   // batches: each particle's slice
