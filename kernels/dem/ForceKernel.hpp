@@ -68,8 +68,8 @@ template <class MemorySpace> struct PartnerSums {
 /// Sample evaluates without touching the state: contact history, force and torque are left as
 /// they are and the contact forces go to slotFn/slotFt and wallFn/wallFt instead. PairOnce
 /// evaluates only the slots of higher neighbour ids (rows are sorted by id) and gives each
-/// partner its side through `partner` and its history through the partner's slot
-/// (computeForcesPairOnce()).
+/// partner its side through `partner`, leaving the partner's copy of the history to
+/// mirrorPairOnceHistory() (computeForcesPairOnce()).
 template <class MemorySpace, bool Kick, bool Sample = false, bool PairOnce = false>
 struct ForceFunctor {
   using Vec = Kokkos::View<double* [2], MemorySpace>;
@@ -79,7 +79,7 @@ struct ForceFunctor {
   Scalar w, tq, wOut, radius, mass, invM, invI;
   Kokkos::View<int*, MemorySpace> count;
   Kokkos::View<std::uint8_t*, MemorySpace> kind;
-  Kokkos::View<std::int64_t*, MemorySpace> id; ///< PairOnce only
+  Kokkos::View<int*, MemorySpace> firstHigher; ///< PairOnce only: first slot of a higher id
   PartnerSums<MemorySpace> partner;            ///< PairOnce only
   Kokkos::View<int**, MemorySpace> index;
   Kokkos::View<double**, MemorySpace> shear, slotFn, slotFt;
@@ -115,31 +115,12 @@ struct ForceFunctor {
     t += ri * c.tangential + c.rollingTorque;
   }
 
-  /// \brief PairOnce: the first slot of row i whose neighbour has a higher id.
-  KOKKOS_INLINE_FUNCTION int firstHigherSlot(int i, int n) const {
-    const std::int64_t own = id(i);
-    int k = 0;
-    while (k < n && id(index(i, k)) < own) {
-      ++k;
-    }
-    return k;
-  }
-
-  /// \brief PairOnce: the history of pair (i, j) into j's slot of i, when j's row has one.
-  KOKKOS_INLINE_FUNCTION void mirrorHistory(int i, int j, double value) const {
-    const int n = count(j) < capacity ? count(j) : capacity;
-    for (int m = 0; m < n; ++m) {
-      if (index(j, m) == i) {
-        shear(j, m) = value;
-        return;
-      }
-    }
-  }
-
   /// \brief PairOnce: adds a force or torque component to partner j's exact sum (column c); a
   /// value too large for the integers (or NaN) flags j instead.
   KOKKOS_INLINE_FUNCTION void givePartner(int j, int c, double value) const {
-    constexpr double limit = 288230376151711744.0; // 2^58: 32 terms still fit in 63 bits
+    // 2^56: the 64 terms of the widest row still fit in 63 bits
+    static_assert(maxNeighborCapacity <= 64, "hikiln::dem: partner sums sized for 64 terms");
+    constexpr double limit = 72057594037927936.0;
     const double scaled = value * (c == 2 ? partner.torqueScale : partner.forceScale);
     if (math::fabs(scaled) < limit) {
       partner.sums(j, c) += static_cast<std::int64_t>(scaled);
@@ -163,7 +144,7 @@ struct ForceFunctor {
     const bool freeI = isFree(kind(i));
     double fx = 0.0, fy = 0.0, t = 0.0;
     const int n = count(i) < capacity ? count(i) : capacity;
-    const int first = PairOnce ? firstHigherSlot(i, n) : 0;
+    const int first = PairOnce ? firstHigher(i) : 0;
     for (int k = first; k < n; ++k) { // ascending neighbour id: a fixed summation order
       const int j = index(i, k);
       const double rj = radius(j);
@@ -182,9 +163,6 @@ struct ForceFunctor {
           slotFt(i, k) = 0.0;
         } else if (shear(i, k) != 0.0) { // history ends with the contact
           shear(i, k) = 0.0;
-          if (PairOnce) {
-            mirrorHistory(i, j, 0.0);
-          }
         }
         continue;
       }
@@ -204,7 +182,6 @@ struct ForceFunctor {
       fy += py;
       t += ri * c.tangential + c.rollingTorque;
       if (PairOnce) { // j's side: the opposite force, its own lever, the opposite rolling torque
-        mirrorHistory(i, j, c.shear);
         givePartner(j, 0, -px);
         givePartner(j, 1, -py);
         givePartner(j, 2, rj * c.tangential - c.rollingTorque);
@@ -260,7 +237,6 @@ makeForceFunctor(ParticleArrays<MemorySpace> const& p, NeighborList<MemorySpace>
   fun.invI = p.inverseInertia;
   fun.count = list.count;
   fun.kind = p.kind;
-  fun.id = p.id;
   fun.index = list.index;
   fun.shear = list.shear;
   fun.slotFn = list.normalForce;

@@ -506,7 +506,10 @@ public:
   }
   /// \brief The neighbour list as the step uses it (count, index, shear; no optional views).
   /// Indices refer to particles() order; ids are particles().id(index(i, k)).
-  const NeighborList<memory_space>& neighborRows() const { return _list; }
+  const NeighborList<memory_space>& neighborRows() const {
+    mirrorHistoryIfPending();
+    return _list;
+  }
   /// \brief True for a system of blocky particles (setParticles() with shapes).
   bool blocky() const { return _isBlocky; }
   /// \brief True for a batch of slices (importSlices()).
@@ -552,6 +555,7 @@ public:
              bytes(_publishedWalls.tangentialForce);
     total += bytes(_blocky.orientation) + bytes(_blocky.shape) + bytes(_blocky.axis) +
              bytes(_area) + bytes(_publishedVirial) + bytes(_pairOutcomes);
+    total += bytes(_pairOnce.partner.sums) + bytes(_pairOnce.firstHigher);
     return total;
   }
   /// \brief Coefficients, walls, gravity and dt as the kernels see them.
@@ -726,6 +730,7 @@ private:
       computeBlockyForces(_space, _particles, _blocky, _list, _walls, settings, _pairOutcomes);
     } else if (usesPairOnce()) {
       computeForcesPairOnce(_space, _particles, _list, _walls, settings, sliceTable(), _pairOnce);
+      _historyMirrorPending = true;
     } else {
       computeForces(_space, _particles, _list, _walls, settings, sliceTable());
     }
@@ -835,6 +840,7 @@ private:
     _published = NeighborList<memory_space>();
     _publishedWalls = WallContactState<memory_space>();
     _pendingHalfDt = 0.0;
+    _historyMirrorPending = false; // a new list: nothing of the old one to copy
     ++_version;
     _rebuildCount = 0;
     _sortCount = 0;
@@ -870,6 +876,17 @@ private:
     if (_pendingHalfDt != 0.0) {
       finishHalfKick(_space, _particles, _pendingHalfDt);
       _pendingHalfDt = 0.0;
+    }
+    mirrorHistoryIfPending();
+  }
+
+  // The pair-once kernel updates each pair's history in the owner's row only: copied into the
+  // partner's slot before anything reads both rows. A rebuild needs no copy: each row carries its
+  // own slots across it, and the step reads the owner's only.
+  void mirrorHistoryIfPending() const {
+    if (_historyMirrorPending) {
+      mirrorPairOnceHistory(_space, _list, _particles.count(), _pairOnce);
+      _historyMirrorPending = false;
     }
   }
 
@@ -985,7 +1002,7 @@ private:
     // (a free function: CUDA extended lambdas may not sit in a private member function)
     copyPositions(_space, _particles.position, _buildPosition, n);
     if (usesPairOnce()) {
-      _pairOnce.block = pairOnceBlockSize(_space, _list, n);
+      layOutPairOnce(_space, _list, _particles.id, n, _pairOnce);
     }
     _rebuildRequested = false;
     ++_rebuildCount;
@@ -1018,7 +1035,8 @@ private:
   mutable WallContactState<memory_space> _publishedWalls;
   mutable std::int64_t _publishedVersion = -1;
   mutable double _pendingHalfDt = 0.0; // deferred second half kick of the last step (0: none)
-  std::int64_t _version = 0;           // bumped whenever state the published views show changes
+  mutable bool _historyMirrorPending = false; // pair-once history not yet in the partners' slots
+  std::int64_t _version = 0; // bumped whenever state the published views show changes
   double _skin = 0.0;
   double _cellSize = 0.0;
   double _time = 0.0;
