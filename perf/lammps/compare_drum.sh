@@ -17,6 +17,8 @@ Usage: perf/lammps/compare_drum.sh [options]
   --build-dir DIR   hikiln build directory (default build-perf/ under the repository root)
   --input FILE      LAMMPS input (default ../shared/reference/lammps-drum2d.in next to the repo)
   --json FILE       also write the results as JSON
+  --hikiln-set K=V  one more hikiln case setting, after the shared ones (repeatable), e.g.
+                    --hikiln-set neighbor.pair_once=true
   -h, --help        this text
 Needs lmp and mpirun (Debian: apt-get install lammps; installed here when missing and root),
 CMake and python3. Runs in a temporary directory; nothing is written to the repository.
@@ -31,6 +33,7 @@ nsettle=20000
 build_dir="$repo/build-perf"
 input=""
 json=""
+extra_sets=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --ranks) ranks="${2:?}"; shift 2 ;;
@@ -41,6 +44,7 @@ while [[ $# -gt 0 ]]; do
     --build-dir) build_dir="${2:?}"; shift 2 ;;
     --input) input="${2:?}"; shift 2 ;;
     --json) json="${2:?}"; shift 2 ;;
+    --hikiln-set) extra_sets+=(--set "${2:?}"); shift 2 ;;
     -h|--help) usage; exit 0 ;;
     *) echo "compare_drum.sh: unknown option '$1'" >&2; usage >&2; exit 2 ;;
   esac
@@ -83,6 +87,7 @@ hikiln_sets=(
   --set neighbor.skin="$skin_fraction" --set drum.fill=0.21 --set time.settle=0.5
   --set time.duration="$tspin" --set time.spin_up=0 --set output.snapshot_interval=1000
   --set output.checkpoint_interval=1000 --set output.average_interval=1000
+  ${extra_sets[@]+"${extra_sets[@]}"}
 )
 
 work="$(mktemp -d)"
@@ -123,10 +128,10 @@ print(f"hikiln {s['particle_steps_per_s']:.6g} {s['particles']} {steps} "
 PY
 done
 
-python3 - "$results" "$ranks" "$json" <<'PY'
+python3 - "$results" "$ranks" "$json" "${extra_sets[*]+${extra_sets[*]}}" <<'PY'
 import json, statistics, sys
 rows = [line.split() for line in open(sys.argv[1]) if line.strip()]
-ranks, out = sys.argv[2], sys.argv[3]
+ranks, out, extra = sys.argv[2], sys.argv[3], sys.argv[4]
 print(f"| run | code | particles | rotation steps | rotation wall s | particle-steps/s | load before/after |")
 print("|---:|:---|---:|---:|---:|---:|:---|")
 runs = {"lammps": [], "hikiln": []}
@@ -137,8 +142,9 @@ med = {code: statistics.median(v) for code, v in runs.items()}
 ratio = med["hikiln"] / med["lammps"]
 print()
 print(f"median particle-steps/s with {ranks} ranks/threads: LAMMPS {med['lammps']:.3g}, "
-      f"hikiln {med['hikiln']:.3g}; hikiln / LAMMPS = {ratio:.2f}")
+      f"hikiln {med['hikiln']:.3g}; hikiln / LAMMPS = {ratio:.2f}"
+      + (f" (hikiln also given: {extra})" if extra else ""))
 if out:
-    json.dump({"ranks": int(ranks), "runs": rows, "median": med, "ratio": ratio},
-              open(out, "w"), indent=2)
+    json.dump({"ranks": int(ranks), "hikiln_extra_settings": extra, "runs": rows, "median": med,
+               "ratio": ratio}, open(out, "w"), indent=2)
 PY
