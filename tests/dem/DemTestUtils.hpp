@@ -51,6 +51,16 @@ inline void expectBitwiseEqual(const std::map<std::int64_t, Kinematics>& a,
   }
 }
 
+// One step of `plain` and of `shuffled`, the latter rebuilt and sorted by cell first (its list and
+// particle order change every step); their particles must stay bitwise equal.
+template <class System> void stepPlainAndReshuffled(System& plain, System& shuffled) {
+  shuffled.forceRebuild();
+  shuffled.sortByCell();
+  plain.step();
+  shuffled.step();
+  expectBitwiseEqual(byId(plain), byId(shuffled));
+}
+
 /// Tangential history of an exported state by (particle id, neighbour id).
 using History = std::map<std::pair<std::int64_t, std::int64_t>, double>;
 inline History history(const DemState& s) {

@@ -80,11 +80,7 @@ TEST(TEST_CATEGORY, dem_history_survives_rebuilds_and_reordering) {
   shuffled.importState(settledBed());
   int slipSeen = 0, stickSeen = 0;
   for (int s = 0; s < 600; ++s) {
-    shuffled.forceRebuild();
-    shuffled.sortByCell();
-    plain.step();
-    shuffled.step();
-    test::expectBitwiseEqual(test::byId(plain), test::byId(shuffled));
+    test::stepPlainAndReshuffled(plain, shuffled);
     if (HasFailure()) {
       FAIL() << "diverged at step " << s;
     }
